@@ -1,0 +1,72 @@
+// Rendering a resolved scene: options in, image and statistics out.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fastshade/image.h"
+#include "fastshade/scene.h"
+
+namespace fastshade {
+
+// The one options struct that reaches the renderer; printable for logs and stats.
+struct RenderOptions {
+  int threads = 0;         // 0 = all hardware threads
+  int tile_px = 64;        // power of two in [kMinTilePx, kMaxTilePx]
+  std::string method = "phong";
+  bool srgb = false;       // encode with the sRGB curve before quantising
+  std::string to_string() const;
+};
+
+// Throws InputError ("--tile: ...") if an option is out of range or names no method.
+void validate(const RenderOptions& options);
+
+// The names `--method` accepts, with one line of description each.
+struct MethodDescription {
+  std::string name, summary;
+};
+std::vector<MethodDescription> list_methods();
+
+struct StageTimes {  // milliseconds
+  double front_end = 0, binning = 0, raster_shade = 0, total = 0;
+};
+
+struct RenderStats {
+  long long triangles_in = 0;       // in the scene's meshes
+  long long triangles_drawn = 0;    // binned (after clipping; a clipped triangle may count more)
+  long long triangles_dropped = 0;  // zero area after snapping, or non-finite
+  long long triangles_culled = 0;   // outside the frustum, back-facing, or covering no pixel centre
+  long long tiles_total = 0, tiles_nonempty = 0;
+  long long covered_pixels = 0;     // pixels any triangle covers (after depth, counted once)
+  int threads = 0, tile = 0;
+  std::string isa, method;
+  StageTimes median;  // median over timed frames
+  int frames = 0;
+  double mpix_per_s() const;  // covered pixels / total time
+  double mtri_per_s() const;  // triangles_in / total time
+};
+
+// Renders frames of one scene; keeps its per-frame arena and per-thread scratch between
+// frames so that timed frames measure rendering, not allocation.
+class Renderer {
+ public:
+  Renderer(const Scene& scene, const RenderOptions& options);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // One frame; `times` receives this frame's stage times.
+  Image render_frame(StageTimes* times = nullptr);
+  // The counts of the last frame (times filled by the caller's timing policy).
+  RenderStats last_stats() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Renders one warm-up frame then `frames` timed ones; stats carry the medians.
+Image render(const Scene& scene, const RenderOptions& options, int frames = 1,
+             RenderStats* stats = nullptr);
+
+}  // namespace fastshade

@@ -1,0 +1,77 @@
+// A scene as the renderer sees it: everything resolved (meshes loaded, camera framed).
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "fastshade/mesh.h"
+
+namespace fastshade {
+
+struct Camera {
+  glm::vec3 eye{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
+  float fovy_deg = 45.0f;
+  float near = 0.1f, far = 100.0f;
+};
+
+enum class LightSpace { World, View };
+
+struct Light {  // directional
+  glm::vec3 direction{0, 0, 1};  // toward the light, unit length, in `space`
+  glm::vec3 color{1, 1, 1};
+  LightSpace space = LightSpace::View;
+};
+
+enum class Viewer { Infinite, Local };  // Infinite: V = (0,0,1) in view space (the paper's case)
+
+struct Material {
+  std::string name;
+  glm::vec3 diffuse{0.7f};   // kd
+  glm::vec3 specular{0.5f};  // ks
+  double shininess = 32.0;   // Blinn-Phong exponent n, any real >= 1
+};
+
+struct Object {
+  std::shared_ptr<const Mesh> mesh;
+  int material = 0;  // index into Scene::materials
+  glm::mat4 model{1.0f};
+};
+
+enum class Cull { None, Back };
+
+struct Scene {
+  int width = 640, height = 480;
+  glm::vec3 background{0, 0, 0};
+  Camera camera;
+  std::vector<Light> lights;
+  Viewer viewer = Viewer::Infinite;
+  glm::vec3 ambient{0, 0, 0};
+  std::vector<Material> materials;
+  std::vector<Object> objects;
+  Cull cull = Cull::None;
+  bool two_sided = false;  // flip the normal on back faces
+  std::string source;      // the scene file, for messages
+};
+
+// Limits on what a scene may ask for (also used by the command line).
+inline constexpr int kMaxImageSide = 16384;
+
+// Parses and resolves a scene file; meshes are read relative to its directory. Throws
+// InputError naming the key path ("objects[2].material: no material \"gold\"").
+Scene load_scene(const std::filesystem::path& path);
+
+// The same from JSON text; `source` names it in messages, `base_dir` resolves mesh paths.
+Scene parse_scene(const std::string& json_text, const std::string& source,
+                  const std::filesystem::path& base_dir);
+
+// The embedded default scene: procedural meshes only.
+const char* default_scene_json();
+
+// World-space bounding sphere framing as the "fit" camera does it (exposed for tests).
+Camera fit_camera(const std::vector<Object>& objects, float distance, float fovy_deg);
+
+}  // namespace fastshade

@@ -1,0 +1,41 @@
+// Every limit and magic number of the pipeline, with the reasoning that bounds it.
+#pragma once
+#include <cstdint>
+
+#include "fastshade/scene.h"
+
+namespace fastshade::limits {
+
+// Sub-pixel precision: 8 fractional bits, as Direct3D 10+ and llvmpipe (FIXED_ORDER 8). Finer
+// would shrink the guard band below; 8 bits put vertices within 1/512 px of their true place.
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int32_t kSubpixelOne = 1 << kSubpixelBits;
+
+// Guard band: screen coordinates stay inside [-kGuardPx, kGuardPx) after clipping, so a
+// fixed-point coordinate needs 15 + 8 = 23 bits plus sign, edge deltas 24 bits, and an edge
+// function (a product of two deltas) 48 bits: exact in int64, and exact in a double's 53-bit
+// mantissa, which the span solver relies on. kMaxImageSide (16384) fits inside the band.
+inline constexpr int32_t kGuardPx = 1 << 15;
+static_assert(kMaxImageSide <= kGuardPx / 2, "the image must sit well inside the guard band");
+
+// Tiles: powers of two. 8 px is the smallest block the shading kernels seed from, so tile
+// edges never cut a block; 256 px keeps one tile's colour + depth scratch (256 KiB + 256 KiB)
+// inside a core's L2. Default 64 as llvmpipe (TILE_ORDER 6).
+inline constexpr int kMinTilePx = 8;
+inline constexpr int kMaxTilePx = 256;
+inline constexpr int kDefaultTilePx = 64;
+
+// Attributes are re-seeded from their plane equation at every aligned block of this many
+// pixels in x, so a pixel's value depends only on its position, never on the tile or span
+// it was drawn in. It must divide kMinTilePx.
+inline constexpr int kSeedBlockPx = 8;
+static_assert(kMinTilePx % kSeedBlockPx == 0);
+
+// Front-end chunk: triangles per binning chunk. Enough to amortise a chunk's bin headers
+// (one counter per tile), small enough that 2 threads get many chunks on a 70k mesh.
+inline constexpr int kTrianglesPerChunk = 4096;
+
+// Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.
+inline constexpr double kMaxShininess = 1e6;
+
+}  // namespace fastshade::limits
