@@ -15,6 +15,7 @@ struct RenderOptions {
   int tile_px = 64;        // power of two in [kMinTilePx, kMaxTilePx]
   std::string method = "phong";
   bool srgb = false;       // encode with the sRGB curve before quantising
+  std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: a process-wide choice
   std::string to_string() const;
 };
 
@@ -65,7 +66,8 @@ class Renderer {
   std::unique_ptr<Impl> impl_;
 };
 
-// Renders one warm-up frame then `frames` timed ones; stats carry the medians.
+// With frames > 1 (a benchmark): one warm-up frame, then `frames` timed ones; stats carry the
+// medians. With frames == 1: one frame, timed.
 Image render(const Scene& scene, const RenderOptions& options, int frames = 1,
              RenderStats* stats = nullptr);
 

@@ -1,0 +1,199 @@
+// The frame loop: front end (vertex stage, triangle setup), binning, back end, with stage
+// times. Implements include/fastshade/render.h.
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "exec/isa.h"
+#include "exec/tile_executor.h"
+#include "fastshade/error.h"
+#include "fastshade/render.h"
+#include "front/binning.h"
+#include "front/scene_geometry.h"
+#include "front/triangle_setup.h"
+#include "front/vertex_stage.h"
+#include "shade/method.h"
+
+namespace fastshade {
+
+std::string RenderOptions::to_string() const {
+  std::ostringstream s;
+  s << "method=" << method << " threads=" << threads << " tile=" << tile_px << " isa=" << isa
+    << " srgb=" << (srgb ? "on" : "off");
+  return s.str();
+}
+
+void validate(const RenderOptions& o) {
+  if (o.threads < 0 || o.threads > 1024)
+    throw InputError("--threads", "expected 0 (all) to 1024, got " + std::to_string(o.threads));
+  if (o.tile_px < limits::kMinTilePx || o.tile_px > limits::kMaxTilePx ||
+      (o.tile_px & (o.tile_px - 1)) != 0)
+    throw InputError("--tile", "expected a power of two from " + std::to_string(limits::kMinTilePx) +
+                                   " to " + std::to_string(limits::kMaxTilePx) + ", got " +
+                                   std::to_string(o.tile_px));
+  if (!find_method(o.method)) {
+    std::string names;
+    for (const Method& m : all_methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
+    throw InputError("--method", "unknown method '" + o.method + "' (expected one of: " + names + ")");
+  }
+}
+
+std::vector<MethodDescription> list_methods() {
+  std::vector<MethodDescription> out;
+  for (const Method& m : all_methods()) out.push_back({std::string(m.name), std::string(m.summary)});
+  return out;
+}
+
+double RenderStats::mpix_per_s() const {
+  return median.total > 0 ? covered_pixels / (median.total * 1e3) : 0.0;
+}
+double RenderStats::mtri_per_s() const {
+  return median.total > 0 ? triangles_in / (median.total * 1e3) : 0.0;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+TileGrid make_grid(int width, int height, int tile_px) {
+  TileGrid g;
+  g.width = width;
+  g.height = height;
+  g.tile_px = tile_px;
+  g.tile_shift = std::countr_zero(static_cast<unsigned>(tile_px));
+  g.tiles_x = (width + tile_px - 1) / tile_px;
+  g.tiles_y = (height + tile_px - 1) / tile_px;
+  return g;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  RenderOptions options;
+  SceneGeometry geometry;
+  const Method* method;
+  ViewTransform xf;
+  AttrNeeds needs;
+  DrawTriangleFn draw;
+  Cull cull;
+  tbb::task_arena arena;
+  Frame frame;
+  std::vector<glm::vec4> clip_pos;
+  TileExecutor executor;
+  RenderStats stats;
+
+  Impl(const Scene& scene, const RenderOptions& o)
+      : options(o),
+        geometry(flatten_scene(scene)),
+        method(find_method(o.method)),
+        xf(view_transform(scene)),
+        cull(scene.cull),
+        arena(o.threads > 0 ? o.threads : tbb::info::default_concurrency()) {
+    select_isa(o.isa);
+    frame.grid = make_grid(scene.width, scene.height, o.tile_px);
+    frame.shade = shade_constants(scene, xf, o.srgb);
+    needs = method->needs(frame.shade);
+    draw = method->select(frame.shade);
+    const std::size_t chunks =
+        (geometry.triangles.size() + limits::kTrianglesPerChunk - 1) / limits::kTrianglesPerChunk;
+    frame.chunks.resize(chunks);
+    stats.triangles_in = static_cast<long long>(geometry.triangles.size());
+    stats.tiles_total = frame.grid.tile_count();
+    stats.threads = arena.max_concurrency();
+    stats.tile = o.tile_px;
+    stats.method = o.method;
+    stats.isa = active_isa();
+  }
+
+  Image render(StageTimes* times) {
+    Image image;
+    image.width = frame.grid.width;
+    image.height = frame.grid.height;
+    image.rgb.resize(std::size_t(image.width) * image.height * 3);
+    StageTimes t;
+    arena.execute([&] {
+      const auto t0 = Clock::now();
+      run_vertex_stage(geometry, xf, needs, frame.shade, clip_pos, frame.attrs);
+      const SetupParams params = setup_params(frame.grid, cull, needs.normal || needs.color || needs.position);
+      const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());
+      tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+        const uint32_t first = static_cast<uint32_t>(c * limits::kTrianglesPerChunk);
+        const uint32_t last = std::min<uint32_t>(first + limits::kTrianglesPerChunk, n_tris);
+        setup_chunk(geometry, clip_pos, frame.attrs, first, last, params, frame.chunks[c]);
+      });
+      t.front_end = ms_since(t0);
+
+      const auto t1 = Clock::now();
+      tbb::parallel_for(std::size_t(0), frame.chunks.size(),
+                        [&](std::size_t c) { count_chunk_bins(frame.grid, frame.chunks[c]); });
+      plan_bins(frame);
+      tbb::parallel_for(std::size_t(0), frame.chunks.size(),
+                        [&](std::size_t c) { fill_chunk_bins(frame, static_cast<uint32_t>(c)); });
+      t.binning = ms_since(t1);
+
+      const auto t2 = Clock::now();
+      const BackEndCounts counts = executor.run(frame, draw, image);
+      t.raster_shade = ms_since(t2);
+      t.total = ms_since(t0);
+      stats.tiles_nonempty = counts.tiles_nonempty;
+      stats.covered_pixels = counts.covered_pixels;
+    });
+    stats.triangles_drawn = stats.triangles_dropped = stats.triangles_culled = 0;
+    for (const Chunk& c : frame.chunks) {
+      stats.triangles_drawn += static_cast<long long>(c.triangles.size());
+      stats.triangles_dropped += c.dropped;
+      stats.triangles_culled += c.culled;
+    }
+    if (times) *times = t;
+    return image;
+  }
+};
+
+Renderer::Renderer(const Scene& scene, const RenderOptions& options) {
+  validate(options);
+  impl_ = std::make_unique<Impl>(scene, options);
+}
+Renderer::~Renderer() = default;
+
+Image Renderer::render_frame(StageTimes* times) { return impl_->render(times); }
+RenderStats Renderer::last_stats() const { return impl_->stats; }
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const RenderOptions& options, int frames, RenderStats* stats) {
+  Renderer renderer(scene, options);
+  frames = std::max(frames, 1);
+  StageTimes t;
+  Image image = renderer.render_frame(&t);  // warm-up: first-touch allocation, caches
+  std::vector<double> front, bin, back, total;
+  for (int i = 0; i < frames; ++i) {
+    image = renderer.render_frame(&t);
+    front.push_back(t.front_end);
+    bin.push_back(t.binning);
+    back.push_back(t.raster_shade);
+    total.push_back(t.total);
+  }
+  if (stats) {
+    *stats = renderer.last_stats();
+    stats->frames = frames;
+    stats->median = {median(front), median(bin), median(back), median(total)};
+  }
+  return image;
+}
+
+}  // namespace fastshade

@@ -1,0 +1,100 @@
+#include "exec/tile_executor.h"
+
+#include <algorithm>
+#include <atomic>
+#include <vector>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
+#include "shade/lighting.h"
+
+namespace fastshade {
+
+namespace {
+
+struct TileBuffers {  // one worker's scratch, sized for the largest tile, reused across tiles
+  std::vector<uint32_t> color;
+  std::vector<float> depth;
+  TileBuffers() {
+    const std::size_t n = std::size_t(limits::kMaxTilePx) * limits::kMaxTilePx + kScratchPadPx;
+    color.resize(n);
+    depth.resize(n);
+  }
+};
+
+uint32_t background_rgba(const ShadeConstants& k) {
+  return pack_rgba(quantize(k.background.r, k.srgb), quantize(k.background.g, k.srgb),
+                   quantize(k.background.b, k.srgb));
+}
+
+void fill_rect(Image& image, const PixelRect& r, uint32_t rgba) {
+  for (int y = r.y0; y <= r.y1; ++y) {
+    uint8_t* out = image.rgb.data() + (std::size_t(y) * image.width + r.x0) * 3;
+    for (int x = r.x0; x <= r.x1; ++x, out += 3) {
+      out[0] = uint8_t(rgba);
+      out[1] = uint8_t(rgba >> 8);
+      out[2] = uint8_t(rgba >> 16);
+    }
+  }
+}
+
+}  // namespace
+
+struct TileExecutor::Scratch {
+  tbb::enumerable_thread_specific<TileBuffers> per_thread;
+};
+
+TileExecutor::TileExecutor() : scratch_(std::make_unique<Scratch>()) {}
+TileExecutor::~TileExecutor() = default;
+
+BackEndCounts TileExecutor::run(const Frame& frame, DrawTriangleFn draw, Image& image) {
+  const TileGrid& grid = frame.grid;
+  const uint32_t background = background_rgba(frame.shade);
+  std::atomic<long long> nonempty{0}, covered{0};
+  // One tile per task, handed out dynamically: tile costs vary by orders of magnitude.
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, grid.tile_count(), 1),
+      [&](const tbb::blocked_range<int>& range) {
+        for (int tile = range.begin(); tile != range.end(); ++tile) {
+          const int tx = tile % grid.tiles_x, ty = tile / grid.tiles_x;
+          const PixelRect rect{tx * grid.tile_px, ty * grid.tile_px,
+                               std::min((tx + 1) * grid.tile_px, grid.width) - 1,
+                               std::min((ty + 1) * grid.tile_px, grid.height) - 1};
+          const uint32_t begin = frame.tile_begin[tile], end = frame.tile_begin[tile + 1];
+          if (begin == end) {  // an empty tile costs only its background
+            fill_rect(image, rect, background);
+            continue;
+          }
+          TileBuffers& buffers = scratch_->per_thread.local();
+          const int stride = grid.tile_px;
+          const int w = rect.x1 - rect.x0 + 1;
+          for (int y = 0; y <= rect.y1 - rect.y0; ++y) {
+            std::fill_n(buffers.color.data() + y * stride, w, background);
+            std::fill_n(buffers.depth.data() + y * stride, w, 1.0f);
+          }
+          const TileTarget target{buffers.color.data(), buffers.depth.data(), stride, rect.x0,
+                                  rect.y0, rect};
+          for (uint32_t i = begin; i < end; ++i) draw(frame, frame.bin_entries[i], target);
+          long long tile_covered = 0;
+          for (int y = 0; y <= rect.y1 - rect.y0; ++y) {
+            const uint32_t* src = buffers.color.data() + y * stride;
+            const float* depth = buffers.depth.data() + y * stride;
+            uint8_t* out = image.rgb.data() + (std::size_t(rect.y0 + y) * image.width + rect.x0) * 3;
+            for (int x = 0; x < w; ++x, out += 3) {
+              out[0] = uint8_t(src[x]);
+              out[1] = uint8_t(src[x] >> 8);
+              out[2] = uint8_t(src[x] >> 16);
+              tile_covered += depth[x] < 1.0f;
+            }
+          }
+          nonempty.fetch_add(1, std::memory_order_relaxed);
+          covered.fetch_add(tile_covered, std::memory_order_relaxed);
+        }
+      },
+      tbb::simple_partitioner());
+  return {nonempty.load(), covered.load()};
+}
+
+}  // namespace fastshade

@@ -1,0 +1,81 @@
+// The one contract between the front end (producer: front/) and the back end (consumer:
+// exec/, raster/, shade/): what a frame's setup and binning leave for the tile workers.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/limits.h"
+#include "frame/shade_constants.h"
+
+namespace fastshade {
+
+// Per-vertex data the shading methods interpolate, in view space. Which fields are filled is
+// decided once per frame from the method's needs (shade/method.h).
+struct VertexAttrs {
+  glm::vec3 n_view;    // unit normal
+  glm::vec3 color;     // lit vertex colour in [0,1] (Gouraud)
+  glm::vec3 pos_view;  // position (local viewer)
+};
+
+// A triangle after clipping, projection and snapping, wound so that its doubled area is
+// positive: edge functions are >= 0 inside. Everything the rasterizer needs, nothing more.
+struct SetupTriangle {
+  int32_t x_fx[3], y_fx[3];  // screen position, fixed point (kSubpixelBits), y down
+  float depth[3];            // window depth in [0, 1]
+  float inv_w[3];            // 1 / clip w, for perspective-correct attributes
+  uint32_t attr[3];          // VertexAttrs index; kClippedAttr marks the chunk's own table
+  int16_t px_min[2], px_max[2];  // pixel-centre bounding box, inclusive, inside the image
+  uint16_t material;
+  uint16_t flags;            // kBackFacing
+};
+inline constexpr uint32_t kClippedAttr = 0x80000000u;
+inline constexpr uint16_t kBackFacing = 1;
+static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
+
+// One chunk of the front end's work: the triangles it set up (in draw order) and the vertex
+// attributes that clipping made.
+struct Chunk {
+  std::vector<SetupTriangle> triangles;
+  std::vector<VertexAttrs> clipped_attrs;
+  std::vector<uint32_t> tile_counts;  // per tile: how many of this chunk's triangles it holds
+  long long dropped = 0, culled = 0;
+};
+
+// Bin entries name a triangle as (chunk, index in chunk). Clipping one input triangle makes at
+// most 7 (a 9-gon fanned), so 15 bits of index hold a chunk of 4096 inputs.
+inline constexpr int kBinIndexBits = 15;
+static_assert((limits::kTrianglesPerChunk * 7) < (1 << kBinIndexBits));
+inline constexpr uint32_t bin_entry(uint32_t chunk, uint32_t index) {
+  return (chunk << kBinIndexBits) | index;
+}
+
+struct TileGrid {
+  int width = 0, height = 0;  // image, pixels
+  int tile_px = limits::kDefaultTilePx;
+  int tile_shift = 6;         // log2(tile_px)
+  int tiles_x = 0, tiles_y = 0;
+  int tile_count() const { return tiles_x * tiles_y; }
+};
+
+struct Frame {
+  TileGrid grid;
+  ShadeConstants shade;                // lights in view space, materials, background
+  std::vector<VertexAttrs> attrs;      // every object's vertices, concatenated
+  std::vector<Chunk> chunks;           // in draw order
+  // Binning result: tile t's triangles are bin_entries[tile_begin[t] .. tile_begin[t+1]),
+  // chunk by chunk and in draw order within a chunk.
+  std::vector<uint32_t> tile_begin;
+  std::vector<uint32_t> bin_entries;
+
+  const SetupTriangle& triangle(uint32_t entry) const {
+    return chunks[entry >> kBinIndexBits].triangles[entry & ((1u << kBinIndexBits) - 1)];
+  }
+  const VertexAttrs& vertex(uint32_t entry, uint32_t attr) const {
+    return (attr & kClippedAttr) ? chunks[entry >> kBinIndexBits].clipped_attrs[attr & ~kClippedAttr]
+                                 : attrs[attr];
+  }
+};
+
+}  // namespace fastshade

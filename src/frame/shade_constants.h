@@ -1,0 +1,32 @@
+// Per-frame shading constants, resolved to view space: what every shading kernel reads.
+#pragma once
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace fastshade {
+
+
+struct LightView {
+  glm::vec3 l_view;    // unit direction toward the light
+  glm::vec3 h_view;    // unit half vector for the infinite viewer, normalize(L + (0,0,1))
+  glm::vec3 color;
+};
+
+struct MaterialConstants {
+  glm::vec3 kd, ks;
+  float shininess;
+  double shininess_d;
+};
+
+struct ShadeConstants {
+  std::vector<LightView> lights;
+  std::vector<MaterialConstants> materials;
+  glm::vec3 ambient{0.0f};
+  glm::vec3 background{0.0f};
+  bool local_viewer = false;
+  bool two_sided = false;
+  bool srgb = false;
+};
+
+}  // namespace fastshade

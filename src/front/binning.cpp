@@ -1,0 +1,64 @@
+#include "front/binning.h"
+
+#include "frame/edge_function.h"
+
+namespace fastshade {
+
+namespace {
+
+// Calls visit(tile) for every tile the triangle may cover, in row-major order.
+template <typename Visit>
+void for_each_tile(const TileGrid& grid, const SetupTriangle& t, Visit&& visit) {
+  const int s = grid.tile_shift;
+  const int tx0 = t.px_min[0] >> s, tx1 = t.px_max[0] >> s;
+  const int ty0 = t.px_min[1] >> s, ty1 = t.px_max[1] >> s;
+  if (tx0 == tx1 && ty0 == ty1) {  // the common case: inside one tile
+    visit(ty0 * grid.tiles_x + tx0);
+    return;
+  }
+  // A long diagonal triangle's bounding box holds many tiles it never touches.
+  const TriangleEdges edges = triangle_edges(t);
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const int x0 = tx << s, y0 = ty << s;
+      if (may_cover(edges, x0, y0, x0 + grid.tile_px - 1, y0 + grid.tile_px - 1))
+        visit(ty * grid.tiles_x + tx);
+    }
+}
+
+}  // namespace
+
+void count_chunk_bins(const TileGrid& grid, Chunk& chunk) {
+  chunk.tile_counts.assign(grid.tile_count(), 0);
+  uint32_t* counts = chunk.tile_counts.data();
+  for (const SetupTriangle& t : chunk.triangles)
+    for_each_tile(grid, t, [&](int tile) { ++counts[tile]; });
+}
+
+void plan_bins(Frame& frame) {
+  const int tiles = frame.grid.tile_count();
+  frame.tile_begin.resize(tiles + 1);
+  uint32_t total = 0;
+  for (int tile = 0; tile < tiles; ++tile) {
+    frame.tile_begin[tile] = total;
+    for (Chunk& chunk : frame.chunks) {
+      const uint32_t n = chunk.tile_counts[tile];
+      chunk.tile_counts[tile] = total;  // from now on: where this chunk writes in this tile
+      total += n;
+    }
+  }
+  frame.tile_begin[tiles] = total;
+  frame.bin_entries.resize(total);
+}
+
+void fill_chunk_bins(Frame& frame, uint32_t chunk_index) {
+  Chunk& chunk = frame.chunks[chunk_index];
+  uint32_t* cursor = chunk.tile_counts.data();
+  uint32_t* entries = frame.bin_entries.data();
+  for (uint32_t i = 0; i < chunk.triangles.size(); ++i) {
+    const uint32_t entry = bin_entry(chunk_index, i);
+    for_each_tile(frame.grid, chunk.triangles[i], [&](int tile) { entries[cursor[tile]++] = entry; });
+  }
+}
+
+}  // namespace fastshade

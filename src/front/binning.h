@@ -1,0 +1,17 @@
+// Front end, last stage: sort every chunk's triangles into per-tile bins, keeping draw order.
+#pragma once
+#include "frame/frame.h"
+
+namespace fastshade {
+
+// Counts one chunk's triangles per tile (into chunk.tile_counts). Parallel over chunks.
+void count_chunk_bins(const TileGrid& grid, Chunk& chunk);
+
+// Lays out frame.tile_begin and turns every chunk's counts into its write cursors. Serial:
+// tiles x chunks additions.
+void plan_bins(Frame& frame);
+
+// Writes one chunk's entries at its cursors. Parallel over chunks.
+void fill_chunk_bins(Frame& frame, uint32_t chunk_index);
+
+}  // namespace fastshade

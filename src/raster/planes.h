@@ -1,0 +1,58 @@
+// Attribute plane equations from exact barycentrics: what every shading method interpolates.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+
+#include "frame/edge_function.h"
+
+namespace fastshade {
+
+// q(px, py) = v0 + gx (px - ax) + gy (py - ay) at pixel centres, clamped to [lo, hi], the range
+// of the three vertex values: the clamp keeps slivers, whose float gradients may be far off
+// (NOTES.md section 1), inside what the triangle can actually take.
+struct Plane {
+  float v0, gx, gy, lo, hi;
+};
+
+// Screen-space barycentric gradients of one triangle, exact from the integer edge functions.
+struct Barycentrics {
+  int ax, ay;               // anchor pixel: the bounding box's first pixel centre
+  double at_anchor[3];      // lambda_k at the anchor
+  double d_dx[3], d_dy[3];  // per pixel
+};
+
+inline Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te) {
+  Barycentrics b;
+  b.ax = t.px_min[0];
+  b.ay = t.px_min[1];
+  const double inv_area = 1.0 / static_cast<double>(doubled_area(t));
+  const int64_t x = pixel_centre_fx(b.ax), y = pixel_centre_fx(b.ay);
+  for (int k = 0; k < 3; ++k) {
+    b.at_anchor[k] = static_cast<double>(te.e[k].at(x, y)) * inv_area;
+    b.d_dx[k] = static_cast<double>(te.e[k].a * limits::kSubpixelOne) * inv_area;
+    b.d_dy[k] = static_cast<double>(te.e[k].b * limits::kSubpixelOne) * inv_area;
+  }
+  return b;
+}
+
+inline Plane make_plane(const Barycentrics& b, double q0, double q1, double q2) {
+  Plane p;
+  p.v0 = static_cast<float>(q0 * b.at_anchor[0] + q1 * b.at_anchor[1] + q2 * b.at_anchor[2]);
+  p.gx = static_cast<float>(q0 * b.d_dx[0] + q1 * b.d_dx[1] + q2 * b.d_dx[2]);
+  p.gy = static_cast<float>(q0 * b.d_dy[0] + q1 * b.d_dy[1] + q2 * b.d_dy[2]);
+  p.lo = static_cast<float>(std::min({q0, q1, q2}));
+  p.hi = static_cast<float>(std::max({q0, q1, q2}));
+  return p;
+}
+
+// The plane's value at the start of row py, before the x term; kernels add gx * (px - ax).
+inline float row_value(const Plane& p, const Barycentrics& b, int py) {
+  return p.v0 + p.gy * static_cast<float>(py - b.ay);
+}
+
+// Scalar evaluation, the exact sequence of float operations the SIMD kernels perform.
+inline float plane_at(const Plane& p, float row, int dx) {
+  return std::clamp(row + p.gx * static_cast<float>(dx), p.lo, p.hi);
+}
+
+}  // namespace fastshade

@@ -1,0 +1,33 @@
+// What every shading method derives first for a binned triangle in one tile: its edges,
+// barycentric gradients, the rectangle to walk and the depth plane. Depth comes from here for
+// every method, so visibility never depends on the method.
+#pragma once
+#include <algorithm>
+
+#include "frame/frame.h"
+#include "raster/planes.h"
+#include "raster/spans.h"
+
+namespace fastshade {
+
+struct TriangleInTile {
+  const SetupTriangle* tri;
+  TriangleEdges edges;
+  Barycentrics bary;
+  PixelRect rect;  // bounding box ∩ tile
+  Plane depth;
+};
+
+// False if the triangle's bounding box misses the tile rectangle.
+inline bool prepare_triangle(const SetupTriangle& t, const PixelRect& tile, TriangleInTile& out) {
+  out.rect = {std::max<int>(t.px_min[0], tile.x0), std::max<int>(t.px_min[1], tile.y0),
+              std::min<int>(t.px_max[0], tile.x1), std::min<int>(t.px_max[1], tile.y1)};
+  if (out.rect.x0 > out.rect.x1 || out.rect.y0 > out.rect.y1) return false;
+  out.tri = &t;
+  out.edges = triangle_edges(t);
+  out.bary = barycentrics(t, out.edges);
+  out.depth = make_plane(out.bary, t.depth[0], t.depth[1], t.depth[2]);
+  return true;
+}
+
+}  // namespace fastshade

@@ -1,0 +1,31 @@
+#include "shade/method.h"
+
+#include <array>
+
+#include "shade/methods.h"
+
+namespace fastshade {
+
+namespace {
+
+const std::array kMethods = {
+    Method{"reference",
+           "per-pixel Blinn-Phong in double precision from exact barycentrics: the yardstick",
+           reference_needs, select_reference},
+    Method{"phong", "per-pixel Blinn-Phong in float with exact pow, as a GL fragment shader does",
+           phong_needs, select_phong},
+    Method{"gouraud", "Blinn-Phong per vertex, colour interpolated perspective-correctly",
+           gouraud_needs, select_gouraud},
+};
+
+}  // namespace
+
+std::span<const Method> all_methods() { return kMethods; }
+
+const Method* find_method(std::string_view name) {
+  for (const Method& m : kMethods)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+}  // namespace fastshade

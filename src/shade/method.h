@@ -1,0 +1,45 @@
+// The method registry: a shading method is a name, what it needs from the front end, and the
+// function that draws one binned triangle into a tile. New kernels join here; the pipeline
+// never names a method.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "frame/frame.h"
+#include "front/vertex_stage.h"
+#include "raster/spans.h"
+
+namespace fastshade {
+
+// One tile's scratch: colour packed as R | G << 8 | B << 16 | 0xFF << 24, and float depth.
+// Rows are `stride` pixels; (x_origin, y_origin) is the image position of element 0. The
+// buffers carry kScratchPadPx pixels of slack so a vector may read and blend past a row end.
+struct TileTarget {
+  uint32_t* color;
+  float* depth;
+  int stride;
+  int x_origin, y_origin;
+  PixelRect rect;  // tile ∩ image
+};
+inline constexpr int kScratchPadPx = 64;
+
+using DrawTriangleFn = void (*)(const Frame& frame, uint32_t entry, const TileTarget& target);
+
+struct Method {
+  std::string_view name;
+  std::string_view summary;
+  AttrNeeds (*needs)(const ShadeConstants& shade);
+  // Chooses the variant for this frame (ISA, viewer, sRGB...): decided once, outside loops.
+  DrawTriangleFn (*select)(const ShadeConstants& shade);
+};
+
+std::span<const Method> all_methods();
+const Method* find_method(std::string_view name);  // nullptr if unknown
+
+// Packs a colour the way the kernels do (for scalar paths and background fills).
+inline uint32_t pack_rgba(uint8_t r, uint8_t g, uint8_t b) {
+  return uint32_t(r) | uint32_t(g) << 8 | uint32_t(b) << 16 | 0xFF000000u;
+}
+
+}  // namespace fastshade

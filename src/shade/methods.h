@@ -1,0 +1,16 @@
+// Entry points of each shading method, for the registry (method.cpp) only.
+#pragma once
+#include "shade/method.h"
+
+namespace fastshade {
+
+AttrNeeds reference_needs(const ShadeConstants& shade);
+DrawTriangleFn select_reference(const ShadeConstants& shade);
+
+AttrNeeds phong_needs(const ShadeConstants& shade);
+DrawTriangleFn select_phong(const ShadeConstants& shade);
+
+AttrNeeds gouraud_needs(const ShadeConstants& shade);
+DrawTriangleFn select_gouraud(const ShadeConstants& shade);
+
+}  // namespace fastshade

@@ -1,0 +1,143 @@
+// `phong`: per pixel, the perspective-correct normal (its n/w planes need no division: the
+// 1/w factor vanishes when normalising), normalised, Blinn-Phong in float with exp/log pow.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shade/phong.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include <hwy/highway.h>
+
+#include "shade/methods.h"
+#include "shade/span_loop-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace fastshade {
+namespace HWY_NAMESPACE {
+
+struct PhongPlanes {
+  Plane n[3];    // n_view / w
+  Plane p[3];    // pos_view / w (local viewer)
+  Plane inv_w;   // (local viewer)
+};
+
+template <bool kLocal, bool kSrgb>
+HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  TriangleInTile tri;
+  if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
+  const SetupTriangle& t = *tri.tri;
+  const ShadeConstants& k = frame.shade;
+  const MaterialConstants& m = k.materials[t.material];
+  const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
+  const VertexAttrs* v[3] = {&frame.vertex(entry, t.attr[0]), &frame.vertex(entry, t.attr[1]),
+                             &frame.vertex(entry, t.attr[2])};
+  PhongPlanes planes;
+  for (int c = 0; c < 3; ++c) {
+    planes.n[c] = make_plane(tri.bary, double(flip * v[0]->n_view[c]) * t.inv_w[0],
+                             double(flip * v[1]->n_view[c]) * t.inv_w[1],
+                             double(flip * v[2]->n_view[c]) * t.inv_w[2]);
+    if constexpr (kLocal)
+      planes.p[c] = make_plane(tri.bary, double(v[0]->pos_view[c]) * t.inv_w[0],
+                               double(v[1]->pos_view[c]) * t.inv_w[1],
+                               double(v[2]->pos_view[c]) * t.inv_w[2]);
+  }
+  if constexpr (kLocal) planes.inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+
+  const DF d;
+  for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
+    float n_row[3], p_row[3], w_row = 0;
+    for (int c = 0; c < 3; ++c) {
+      n_row[c] = row_value(planes.n[c], tri.bary, py);
+      if constexpr (kLocal) p_row[c] = row_value(planes.p[c], tri.bary, py);
+    }
+    if constexpr (kLocal) w_row = row_value(planes.inv_w, tri.bary, py);
+    ShadeSpan(tri, py, x0, x1, tt, [&](VF dx, MF) {
+      VF nx = EvalPlane(d, planes.n[0], n_row[0], dx);
+      VF ny = EvalPlane(d, planes.n[1], n_row[1], dx);
+      VF nz = EvalPlane(d, planes.n[2], n_row[2], dx);
+      const VF len2 = hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz));
+      const VF inv_len =
+          hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), hn::Sqrt(len2)));
+      nx = hn::Mul(nx, inv_len);
+      ny = hn::Mul(ny, inv_len);
+      nz = hn::Mul(nz, inv_len);
+      VF vx, vy, vz;  // toward the eye (local viewer only)
+      if constexpr (kLocal) {
+        const VF w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, planes.inv_w, w_row, dx));
+        vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], p_row[0], dx), w));
+        vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], p_row[1], dx), w));
+        vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], p_row[2], dx), w));
+        const VF inv = hn::Div(hn::Set(d, 1.0f),
+                               hn::Sqrt(hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)),
+                                                hn::Mul(vz, vz))));
+        vx = hn::Mul(vx, inv);
+        vy = hn::Mul(vy, inv);
+        vz = hn::Mul(vz, inv);
+      }
+      VF r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
+      for (const LightView& light : k.lights) {
+        const VF lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
+                 lz = hn::Set(d, light.l_view.z);
+        VF hx, hy, hz;
+        if constexpr (kLocal) {
+          hx = hn::Add(lx, vx);
+          hy = hn::Add(ly, vy);
+          hz = hn::Add(lz, vz);
+          const VF h2 = hn::Add(hn::Add(hn::Mul(hx, hx), hn::Mul(hy, hy)), hn::Mul(hz, hz));
+          const VF inv = hn::IfThenElseZero(hn::Gt(h2, hn::Zero(d)),
+                                            hn::Div(hn::Set(d, 1.0f), hn::Sqrt(h2)));
+          hx = hn::Mul(hx, inv);
+          hy = hn::Mul(hy, inv);
+          hz = hn::Mul(hz, inv);
+        } else {
+          hx = hn::Set(d, light.h_view.x);
+          hy = hn::Set(d, light.h_view.y);
+          hz = hn::Set(d, light.h_view.z);
+        }
+        const VF ndl = hn::Add(hn::Add(hn::Mul(nx, lx), hn::Mul(ny, ly)), hn::Mul(nz, lz));
+        const VF ndh = hn::Add(hn::Add(hn::Mul(nx, hx), hn::Mul(ny, hy)), hn::Mul(nz, hz));
+        const VF diffuse = hn::Max(ndl, hn::Zero(d));
+        const VF specular = SpecularPower(d, ndh, m.shininess);
+        r = hn::Add(r, hn::Mul(hn::Set(d, light.color.r),
+                               hn::Add(hn::Mul(hn::Set(d, m.kd.r), diffuse),
+                                       hn::Mul(hn::Set(d, m.ks.r), specular))));
+        g = hn::Add(g, hn::Mul(hn::Set(d, light.color.g),
+                               hn::Add(hn::Mul(hn::Set(d, m.kd.g), diffuse),
+                                       hn::Mul(hn::Set(d, m.ks.g), specular))));
+        b = hn::Add(b, hn::Mul(hn::Set(d, light.color.b),
+                               hn::Add(hn::Mul(hn::Set(d, m.kd.b), diffuse),
+                                       hn::Mul(hn::Set(d, m.ks.b), specular))));
+      }
+      return PackRGBA<kSrgb>(d, r, g, b);
+    });
+  });
+}
+
+void DrawPhongInfinite(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<false, false>(f, e, t); }
+void DrawPhongInfiniteSrgb(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<false, true>(f, e, t); }
+void DrawPhongLocal(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<true, false>(f, e, t); }
+void DrawPhongLocalSrgb(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<true, true>(f, e, t); }
+
+}  // namespace HWY_NAMESPACE
+}  // namespace fastshade
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace fastshade {
+
+HWY_EXPORT(DrawPhongInfinite);
+HWY_EXPORT(DrawPhongInfiniteSrgb);
+HWY_EXPORT(DrawPhongLocal);
+HWY_EXPORT(DrawPhongLocalSrgb);
+
+AttrNeeds phong_needs(const ShadeConstants& shade) {
+  return {.normal = true, .color = false, .position = shade.local_viewer};
+}
+
+DrawTriangleFn select_phong(const ShadeConstants& shade) {
+  if (shade.local_viewer)
+    return shade.srgb ? &HWY_DYNAMIC_DISPATCH(DrawPhongLocalSrgb) : &HWY_DYNAMIC_DISPATCH(DrawPhongLocal);
+  return shade.srgb ? &HWY_DYNAMIC_DISPATCH(DrawPhongInfiniteSrgb)
+                    : &HWY_DYNAMIC_DISPATCH(DrawPhongInfinite);
+}
+
+}  // namespace fastshade
+#endif

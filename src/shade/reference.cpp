@@ -1,0 +1,63 @@
+// The yardstick: per pixel, exact barycentrics from the integer edge functions, the
+// perspective-correct normal, normalised, and Blinn-Phong, all in double. Scalar on purpose.
+#include <glm/geometric.hpp>
+
+#include "raster/triangle_in_tile.h"
+#include "shade/lighting.h"
+#include "shade/methods.h"
+
+namespace fastshade {
+
+namespace {
+
+void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  TriangleInTile tri;
+  if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
+  const SetupTriangle& t = *tri.tri;
+  const ShadeConstants& k = frame.shade;
+  const MaterialConstants& material = k.materials[t.material];
+  const double flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0 : 1.0;
+  glm::dvec3 n_view[3], pos_view[3];
+  for (int i = 0; i < 3; ++i) {
+    const VertexAttrs& v = frame.vertex(entry, t.attr[i]);
+    n_view[i] = glm::dvec3(v.n_view) * flip;
+    pos_view[i] = glm::dvec3(v.pos_view);
+  }
+  const double inv_area = 1.0 / static_cast<double>(doubled_area(t));
+  for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
+    const float depth_row = row_value(tri.depth, tri.bary, py);
+    float* depth = tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin;
+    uint32_t* color = tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin;
+    for (int px = x0; px <= x1; ++px) {
+      const float z = plane_at(tri.depth, depth_row, px - tri.bary.ax);
+      if (!(z < depth[px])) continue;
+      depth[px] = z;
+      double mu[3], mu_sum = 0;
+      for (int i = 0; i < 3; ++i) {
+        const int64_t e = tri.edges.e[i].at(pixel_centre_fx(px), pixel_centre_fx(py));
+        mu[i] = static_cast<double>(e) * inv_area * static_cast<double>(t.inv_w[i]);
+        mu_sum += mu[i];
+      }
+      glm::dvec3 n(0.0), pos(0.0);
+      for (int i = 0; i < 3; ++i) {
+        n += n_view[i] * mu[i];
+        pos += pos_view[i] * (mu[i] / mu_sum);
+      }
+      const double len = glm::length(n);
+      n = len > 0 ? n / len : glm::dvec3(0.0);
+      const glm::dvec3 v_view = k.local_viewer ? glm::normalize(-pos) : glm::dvec3(0, 0, 1);
+      const glm::dvec3 c = blinn_phong<double>(n, v_view, !k.local_viewer, material, k);
+      color[px] = pack_rgba(quantize(c.r, k.srgb), quantize(c.g, k.srgb), quantize(c.b, k.srgb));
+    }
+  });
+}
+
+}  // namespace
+
+AttrNeeds reference_needs(const ShadeConstants& shade) {
+  return {.normal = true, .color = false, .position = shade.local_viewer};
+}
+
+DrawTriangleFn select_reference(const ShadeConstants&) { return draw_reference; }
+
+}  // namespace fastshade
