@@ -1,0 +1,289 @@
+// write_image / read_image / check_output_path: round trips and failure behaviour.
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "fastshade/error.h"
+#include "fastshade/image.h"
+
+namespace fs = std::filesystem;
+using fastshade::Image;
+using fastshade::ImageF;
+using fastshade::InputError;
+
+namespace {
+
+// A fresh empty directory per test, removed afterwards.
+class ImageIoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("fastshade_image_io_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::set<std::string> listing() const {
+    std::set<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.insert(e.path().filename().string());
+    return names;
+  }
+
+  fs::path dir_;
+};
+
+// Every 8-bit value appears, plus the extremes in each channel, on a non-square image.
+Image test_image(int w = 19, int h = 14) {
+  Image img;
+  img.width = w;
+  img.height = h;
+  img.rgb.resize(size_t(w) * h * 3);
+  for (size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = uint8_t((i * 37 + i / 3) % 256);
+  img.rgb[0] = 0;
+  img.rgb[1] = 255;
+  img.rgb[2] = 128;
+  return img;
+}
+
+// Message is one line and names the path.
+void expect_message(const std::exception& e, const fs::path& path) {
+  const std::string msg = e.what();
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  EXPECT_EQ(msg.rfind(path.string() + ": ", 0), 0u) << msg;
+}
+
+OIIO::TypeDesc stored_format(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return OIIO::TypeDesc::UNKNOWN;
+  return in->spec().format;
+}
+
+void expect_exact_round_trip(const Image& img, const ImageF& back) {
+  ASSERT_EQ(back.width, img.width);
+  ASSERT_EQ(back.height, img.height);
+  ASSERT_EQ(back.rgb.size(), img.rgb.size());
+  for (size_t i = 0; i < img.rgb.size(); ++i) {
+    ASSERT_NEAR(back.rgb[i], img.rgb[i] / 255.0f, 1e-7) << "at " << i;
+    ASSERT_EQ(std::lround(back.rgb[i] * 255.0f), img.rgb[i]) << "at " << i;
+  }
+}
+
+TEST_F(ImageIoTest, PngRoundTripIsExact) {
+  const Image img = test_image();
+  const fs::path p = dir_ / "out.png";
+  fastshade::write_image(img, p);
+  EXPECT_EQ(stored_format(p), OIIO::TypeDesc::UINT8);
+  expect_exact_round_trip(img, fastshade::read_image(p));
+}
+
+TEST_F(ImageIoTest, TifRoundTripIsExact) {
+  const Image img = test_image();
+  const fs::path p = dir_ / "out.tif";
+  fastshade::write_image(img, p);
+  EXPECT_EQ(stored_format(p), OIIO::TypeDesc::UINT8);
+  expect_exact_round_trip(img, fastshade::read_image(p));
+}
+
+TEST_F(ImageIoTest, ExrRoundTripWithinHalfAndBackToSameCode) {
+  const Image img = test_image();
+  const fs::path p = dir_ / "out.exr";
+  fastshade::write_image(img, p);
+  EXPECT_EQ(stored_format(p), OIIO::TypeDesc::HALF);
+  const ImageF back = fastshade::read_image(p);
+  ASSERT_EQ(back.width, img.width);
+  ASSERT_EQ(back.height, img.height);
+  for (size_t i = 0; i < img.rgb.size(); ++i) {
+    const float exact = img.rgb[i] / 255.0f;
+    // Half has an 11-bit significand: relative error at most 2^-11 after rounding.
+    ASSERT_LE(std::fabs(back.rgb[i] - exact), exact * std::ldexp(1.0f, -11) + 1e-7f) << "at " << i;
+    ASSERT_EQ(std::lround(back.rgb[i] * 255.0f), img.rgb[i]) << "at " << i;
+  }
+}
+
+TEST_F(ImageIoTest, OverwritesExistingFileAndLeavesNoTemp) {
+  const fs::path p = dir_ / "out.png";
+  { std::ofstream(p) << "old contents"; }
+  const Image img = test_image(4, 3);
+  fastshade::write_image(img, p);
+  expect_exact_round_trip(img, fastshade::read_image(p));
+  EXPECT_EQ(listing(), std::set<std::string>{"out.png"});
+}
+
+TEST_F(ImageIoTest, SuccessfulWritesLeaveOnlyTargets) {
+  const Image img = test_image(5, 5);
+  fastshade::write_image(img, dir_ / "a.png");
+  fastshade::write_image(img, dir_ / "b.exr");
+  fastshade::write_image(img, dir_ / "c.tif");
+  fastshade::write_image(img, dir_ / "a.png");  // again, over itself
+  EXPECT_EQ(listing(), (std::set<std::string>{"a.png", "b.exr", "c.tif"}));
+}
+
+TEST_F(ImageIoTest, MissingDirectoryFailsBeforeWriting) {
+  const fs::path missing = dir_ / "nope";
+  const fs::path p = missing / "out.png";
+  try {
+    fastshade::check_output_path(p);
+    FAIL() << "check_output_path accepted a missing directory";
+  } catch (const InputError& e) {
+    expect_message(e, p);
+    EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(fastshade::write_image(test_image(), p), InputError);
+  EXPECT_FALSE(fs::exists(missing));
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(ImageIoTest, UnsupportedExtensionFails) {
+  const fs::path p = dir_ / "out.xyz";
+  try {
+    fastshade::check_output_path(p);
+    FAIL() << "check_output_path accepted .xyz";
+  } catch (const InputError& e) {
+    expect_message(e, p);
+    EXPECT_EQ(std::string(e.what()), p.string() + ": unsupported output format '.xyz'");
+  }
+  EXPECT_THROW(fastshade::write_image(test_image(), p), InputError);
+  EXPECT_THROW(fastshade::check_output_path(dir_ / "noextension"), InputError);
+  EXPECT_TRUE(listing().empty());
+  EXPECT_FALSE(OIIO::has_error()) << "a pending OIIO error was left behind";
+}
+
+TEST_F(ImageIoTest, DirectoryAsOutputPathFails) {
+  const fs::path p = dir_ / "looks_like.png";
+  fs::create_directory(p);
+  try {
+    fastshade::check_output_path(p);
+    FAIL() << "check_output_path accepted a directory";
+  } catch (const InputError& e) {
+    expect_message(e, p);
+  }
+  EXPECT_THROW(fastshade::write_image(test_image(), p), InputError);
+  EXPECT_TRUE(fs::is_directory(p));
+  EXPECT_TRUE(fs::is_empty(p));
+  EXPECT_EQ(listing(), std::set<std::string>{"looks_like.png"});
+}
+
+TEST_F(ImageIoTest, ParentThatIsAFileFails) {
+  const fs::path file = dir_ / "file";
+  { std::ofstream(file) << "x"; }
+  EXPECT_THROW(fastshade::check_output_path(file / "out.png"), InputError);
+}
+
+// The writer itself refuses (ICO holds at most 256x256) after the temp name was chosen: the
+// error names the target and nothing is left in the directory.
+TEST_F(ImageIoTest, WriterFailureLeavesNothing) {
+  const fs::path p = dir_ / "big.ico";
+  ASSERT_NO_THROW(fastshade::check_output_path(p));
+  try {
+    fastshade::write_image(test_image(300, 300), p);
+    FAIL() << "ICO writer accepted 300x300";
+  } catch (const InputError& e) {
+    expect_message(e, p);
+  }
+  EXPECT_TRUE(listing().empty());
+}
+
+// libpng refuses rows wider than 1,000,000 px once the file is already open: the temp file
+// exists on disk at that point and must be removed.
+TEST_F(ImageIoTest, FailureAfterFileCreatedLeavesNothing) {
+  const fs::path p = dir_ / "wide.png";
+  try {
+    fastshade::write_image(test_image(1000001, 1), p);
+    FAIL() << "libpng accepted a 1000001 px row";
+  } catch (const InputError& e) {
+    expect_message(e, p);
+  }
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(ImageIoTest, BadBufferFailsAndLeavesNothing) {
+  Image img = test_image(4, 4);
+  img.rgb.pop_back();
+  EXPECT_THROW(fastshade::write_image(img, dir_ / "out.png"), InputError);
+  EXPECT_THROW(fastshade::write_image(Image{}, dir_ / "out.png"), InputError);
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(ImageIoTest, ReadMissingFileFails) {
+  const fs::path p = dir_ / "missing.png";
+  try {
+    fastshade::read_image(p);
+    FAIL() << "read a missing file";
+  } catch (const InputError& e) {
+    expect_message(e, p);
+  }
+}
+
+TEST_F(ImageIoTest, ReadGarbageFileFails) {
+  for (const char* name : {"garbage.png", "garbage.exr", "garbage.txt", "empty.tif"}) {
+    const fs::path p = dir_ / name;
+    {
+      std::ofstream f(p, std::ios::binary);
+      if (std::string(name) != "empty.tif") f << "this is not an image\nsecond line\n";
+    }
+    try {
+      fastshade::read_image(p);
+      FAIL() << "read garbage " << name;
+    } catch (const InputError& e) {
+      expect_message(e, p);
+    }
+  }
+  EXPECT_FALSE(OIIO::has_error()) << "a pending OIIO error was left behind";
+}
+
+TEST_F(ImageIoTest, ReadDirectoryFails) {
+  EXPECT_THROW(fastshade::read_image(dir_), InputError);
+}
+
+// Writes an nch-channel 8-bit PNG straight through OIIO; channel c of pixel i is f(i, c).
+void write_png_channels(const fs::path& p, int w, int h, int nch, int (*f)(int, int)) {
+  std::vector<uint8_t> data(size_t(w) * h * nch);
+  for (int i = 0; i < w * h; ++i)
+    for (int c = 0; c < nch; ++c) data[size_t(i) * nch + c] = uint8_t(f(i, c));
+  auto out = OIIO::ImageOutput::create(p.string());
+  ASSERT_TRUE(out);
+  OIIO::ImageSpec spec(w, h, nch, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // store these bytes, do not un-premultiply
+  ASSERT_TRUE(out->open(p.string(), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, data.data()));
+  ASSERT_TRUE(out->close());
+}
+
+TEST_F(ImageIoTest, GreyIsReplicated) {
+  const fs::path p = dir_ / "grey.png";
+  write_png_channels(p, 6, 2, 1, [](int i, int) { return i * 20; });
+  const ImageF img = fastshade::read_image(p);
+  ASSERT_EQ(img.width, 6);
+  ASSERT_EQ(img.height, 2);
+  for (int i = 0; i < 12; ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(img.rgb[i * 3 + c], i * 20 / 255.0f);
+}
+
+TEST_F(ImageIoTest, GreyAlphaKeepsGrey) {
+  const fs::path p = dir_ / "ga.png";
+  write_png_channels(p, 3, 3, 2, [](int i, int c) { return c == 0 ? i * 25 : 255 - i; });
+  const ImageF img = fastshade::read_image(p);
+  for (int i = 0; i < 9; ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(img.rgb[i * 3 + c], i * 25 / 255.0f);
+}
+
+// Alpha below 255 must not scale the colour (OIIO premultiplies PNG unless told not to).
+TEST_F(ImageIoTest, RgbaDropsAlpha) {
+  const fs::path p = dir_ / "rgba.png";
+  write_png_channels(p, 4, 2, 4, [](int i, int c) { return c == 3 ? 100 + i : i * 30 + c; });
+  const ImageF img = fastshade::read_image(p);
+  ASSERT_EQ(img.rgb.size(), 4u * 2 * 3);
+  for (int i = 0; i < 8; ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(img.rgb[i * 3 + c], (i * 30 + c) / 255.0f);
+}
+
+}  // namespace
