@@ -8,7 +8,6 @@
 // the same codes.
 #include <unistd.h>
 
-#include <atomic>
 #include <cctype>
 #include <cstdio>
 #include <string>
@@ -19,6 +18,7 @@
 
 #include "fastshade/error.h"
 #include "fastshade/image.h"
+#include "io/atomic_file.h"
 #include "io/oiio_error.h"
 
 namespace fastshade {
@@ -36,40 +36,6 @@ bool is_exr(const fs::path& path) {
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext == ".exr";
 }
-
-// ".NAME.tmp<pid>.<n>EXT" beside the target: hidden, unique within and across processes, and
-// ending in the real extension so OpenImageIO picks the same writer.
-fs::path temp_path_for(const fs::path& path) {
-  static std::atomic<unsigned long> counter{0};
-  // Built by append: "." + std::string&& trips GCC 12's false -Wrestrict (GCC bug 105651).
-  std::string name = ".";
-  name += path.filename().string();
-  name += ".tmp";
-  name += std::to_string(::getpid());
-  name += '.';
-  name += std::to_string(counter.fetch_add(1));
-  name += path.extension().string();
-  return parent_dir(path) / name;
-}
-
-// Removes the temporary file unless released: every failure path, exceptions included.
-class TempFile {
- public:
-  explicit TempFile(fs::path p) : path_(std::move(p)) {}
-  ~TempFile() {
-    if (!path_.empty()) {
-      std::error_code ec;
-      fs::remove(path_, ec);
-    }
-  }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  const fs::path& path() const { return path_; }
-  void release() { path_.clear(); }
-
- private:
-  fs::path path_;
-};
 
 }  // namespace
 
@@ -107,7 +73,7 @@ void write_image(const Image& image, const fs::path& path) {
     throw InputError(where, "image buffer holds " + std::to_string(image.rgb.size()) +
                                 " bytes, expected " + std::to_string(n));
 
-  TempFile temp(temp_path_for(path));
+  TempFile temp(path);
   const std::string temp_name = temp.path().string();
   auto out = OIIO::ImageOutput::create(temp_name);
   if (!out) {
@@ -137,10 +103,7 @@ void write_image(const Image& image, const fs::path& path) {
   }
   out.reset();
 
-  std::error_code ec;
-  fs::rename(temp.path(), path, ec);
-  if (ec) throw InputError(where, "cannot move the written image into place: " + ec.message());
-  temp.release();
+  temp.commit();
 }
 
 }  // namespace fastshade

@@ -82,7 +82,7 @@ HWY_INLINE void ShadeSpan(const TriangleInTile& tri, int py, int x0, int x1, con
   const auto iota = hn::Iota(di, 0);
   for (int x = x0; x <= x1; x += lanes) {
     const auto xi = hn::Add(hn::Set(di, x), iota);
-    const MF inside = hn::RebindMask(d, hn::Le(xi, hn::Set(di, x1)));
+    const MF inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, x1 + 1)));
     const VF dx = hn::ConvertTo(d, hn::Sub(xi, hn::Set(di, tri.bary.ax)));
     const VF z = EvalPlane(d, tri.depth, depth_row, dx);
     const MF pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, depth + x)));

@@ -1,0 +1,68 @@
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "fastshade/error.h"
+#include "fastshade/image.h"
+#include "fastshade/scene.h"
+#include "io/atomic_file.h"
+
+namespace fastshade {
+
+namespace {
+
+nlohmann::json stats_json(const RenderStats& s) {
+  return {{"triangles_in", s.triangles_in},
+          {"triangles_drawn", s.triangles_drawn},
+          {"triangles_dropped", s.triangles_dropped},
+          {"triangles_culled", s.triangles_culled},
+          {"tiles_total", s.tiles_total},
+          {"tiles_nonempty", s.tiles_nonempty},
+          {"covered_pixels", s.covered_pixels},
+          {"threads", s.threads},
+          {"tile", s.tile},
+          {"isa", s.isa},
+          {"method", s.method},
+          {"frames", s.frames},
+          {"median_ms",
+           {{"front_end", s.median.front_end},
+            {"binning", s.median.binning},
+            {"raster_shade", s.median.raster_shade},
+            {"total", s.median.total}}},
+          {"mpix_per_s", s.mpix_per_s()},
+          {"mtri_per_s", s.mtri_per_s()}};
+}
+
+}  // namespace
+
+int run_render(const RenderCommand& cmd) {
+  if (cmd.frames < 1 || cmd.frames > 100000)
+    throw InputError("--frames", "expected 1 to 100000, got " + std::to_string(cmd.frames));
+  validate(cmd.options);
+  // Every output is checked before the (possibly long) render starts.
+  check_output_path(cmd.output);
+  if (!cmd.stats_path.empty()) {
+    const std::filesystem::path dir = std::filesystem::path(cmd.stats_path).parent_path();
+    if (!dir.empty() && !std::filesystem::is_directory(dir))
+      throw InputError(cmd.stats_path, "directory '" + dir.string() + "' does not exist");
+  }
+  const Scene scene = cmd.scene.empty() ? parse_scene(default_scene_json(), "<default scene>", ".")
+                                        : load_scene(cmd.scene);
+  RenderStats stats;
+  const Image image = render(scene, cmd.options, cmd.frames, &stats);
+  write_image(image, cmd.output);
+  if (!cmd.stats_path.empty()) write_text_file(cmd.stats_path, stats_json(stats).dump(2) + "\n");
+  std::printf(
+      "%s: %dx%d, %s, %lld triangles (%lld drawn, %lld dropped, %lld culled), %d threads, "
+      "tile %d, %s: %.2f ms (front end %.2f, binning %.2f, raster+shade %.2f)%s, %.1f Mpix/s\n",
+      cmd.output.c_str(), image.width, image.height, stats.method.c_str(), stats.triangles_in,
+      stats.triangles_drawn, stats.triangles_dropped, stats.triangles_culled, stats.threads,
+      stats.tile, stats.isa.c_str(), stats.median.total, stats.median.front_end,
+      stats.median.binning, stats.median.raster_shade,
+      stats.frames > 1 ? (" median of " + std::to_string(stats.frames)).c_str() : "",
+      stats.mpix_per_s());
+  return 0;
+}
+
+}  // namespace fastshade
