@@ -1,0 +1,151 @@
+// Cameras: explicit ones are checked, "fit" ones frame the objects' world-space bounding sphere.
+#include "io/scene_camera.h"
+
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "fastshade/error.h"
+
+namespace fastshade {
+namespace {
+
+using json_path::kAnyNumber;
+using json_path::kInf;
+using json_path::kPositive;
+using json_path::Range;
+using json_path::Reader;
+using nlohmann::json;
+
+constexpr double kFitMargin = 1.1;  // near/far sit 1.1 radii in front of/behind the centre
+constexpr double kDefaultFitDistance = 3.0;
+constexpr double kDefaultFovyDeg = 45.0;
+const Range kFovyRange{0, 180, true, true};
+
+struct Sphere {
+  glm::dvec3 center{0.0};
+  double radius = 0.0;
+  bool empty = true;  // no vertices at all
+};
+
+// Centre = centre of the AABB of all transformed vertices; radius = the farthest of them.
+// Two passes over the vertices, in double, each vertex transformed by its object's model.
+Sphere bounding_sphere(const std::vector<Object>& objects) {
+  glm::dvec3 lo(kInf), hi(-kInf);
+  auto for_each_vertex = [&](auto&& visit) {
+    for (const Object& object : objects) {
+      if (!object.mesh) continue;
+      const glm::dmat4 model(object.model);
+      for (const glm::vec3& p : object.mesh->positions)
+        visit(glm::dvec3(model * glm::dvec4(glm::dvec3(p), 1.0)));
+    }
+  };
+  Sphere sphere;
+  for_each_vertex([&](const glm::dvec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+    sphere.empty = false;
+  });
+  if (sphere.empty) return sphere;
+  sphere.center = 0.5 * (lo + hi);
+  double r2 = 0.0;
+  for_each_vertex([&](const glm::dvec3& p) {
+    const glm::dvec3 d = p - sphere.center;
+    r2 = std::max(r2, glm::dot(d, d));
+  });
+  sphere.radius = std::sqrt(r2);
+  return sphere;
+}
+
+Camera fit_sphere(const Sphere& sphere, double distance, double fovy_deg) {
+  Camera camera;
+  camera.target = glm::vec3(sphere.center);
+  camera.eye = glm::vec3(sphere.center + glm::dvec3(0.0, 0.0, distance * sphere.radius));
+  camera.up = glm::vec3(0, 1, 0);
+  camera.fovy_deg = float(fovy_deg);
+  camera.near = float((distance - kFitMargin) * sphere.radius);
+  camera.far = float((distance + kFitMargin) * sphere.radius);
+  return camera;
+}
+
+// The checks every camera must pass, on the float values the renderer will use; returns the
+// key at fault and the problem, or an empty key.
+std::pair<std::string, std::string> camera_problem(const Camera& c) {
+  const glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.eye);
+  const glm::dvec3 up(c.up);
+  if (!(c.fovy_deg > 0.0f && c.fovy_deg < 180.0f))
+    return {"fovy_deg", "expected a number in (0, 180), got " + json_path::format_number(c.fovy_deg)};
+  if (!(std::isfinite(c.near) && c.near > 0.0f))
+    return {"near", "expected a number > 0, got " + json_path::format_number(c.near)};
+  if (!(std::isfinite(c.far) && c.far > c.near))
+    return {"far", "must be greater than near (" + json_path::format_number(c.near) + "), got " +
+                       json_path::format_number(c.far)};
+  if (!(glm::dot(view, view) > 0.0)) return {"target", "must differ from eye"};
+  if (!(glm::dot(up, up) > 0.0)) return {"up", "must not be the zero vector"};
+  // sin of the angle between up and the view direction; 1e-6 rad is "parallel".
+  const double sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(up)));
+  if (!(sine > 1e-6)) return {"up", "must not be parallel to the view direction (target - eye)"};
+  return {};
+}
+
+}  // namespace
+
+Camera fit_camera(const std::vector<Object>& objects, float distance, float fovy_deg) {
+  const Sphere sphere = bounding_sphere(objects);
+  if (sphere.empty || !(sphere.radius > 0.0) || !std::isfinite(sphere.radius))
+    throw InputError("fit camera", "the objects have no extent to frame");
+  if (!(distance > kFitMargin))
+    throw InputError("fit camera", "distance must be > 1.1, got " + std::to_string(distance));
+  return fit_sphere(sphere, distance, fovy_deg);
+}
+
+Camera parse_camera(const Reader& r, const json* j, const std::vector<Object>& objects) {
+  bool fit = j == nullptr;
+  if (j) {
+    if (!j->is_object()) r.fail("camera", "expected an object, got " + json_path::describe(*j));
+    if (const json* f = Reader::find(*j, "fit")) fit = r.boolean(*f, "camera.fit");
+  }
+
+  Camera camera;
+  if (fit) {
+    double distance = kDefaultFitDistance, fovy = kDefaultFovyDeg;
+    if (j) {
+      r.expect_object(*j, "camera", {"fit", "distance", "fovy_deg"});
+      if (const json* v = Reader::find(*j, "distance"))
+        distance = r.number(*v, "camera.distance", Range{kFitMargin, kInf, true});
+      if (const json* v = Reader::find(*j, "fovy_deg")) fovy = r.number(*v, "camera.fovy_deg", kFovyRange);
+    }
+    const Sphere sphere = bounding_sphere(objects);
+    if (sphere.empty || !(sphere.radius > 0.0))
+      r.fail("camera.fit", "the objects have no extent to frame");
+    camera = fit_sphere(sphere, distance, fovy);
+    if (auto [key, problem] = camera_problem(camera); !key.empty())
+      r.fail("camera.fit", "the fitted camera is degenerate (" + key + ": " + problem +
+                               "), bounding radius " + json_path::format_number(sphere.radius));
+    return camera;
+  }
+
+  r.expect_object(*j, "camera", {"fit", "eye", "target", "up", "fovy_deg", "near", "far"});
+  for (const char* key : {"eye", "target"}) {
+    if (!Reader::find(*j, key))
+      r.fail(json_path::child("camera", key),
+             "missing (give \"eye\" and \"target\", or \"fit\": true)");
+  }
+  camera.eye = glm::vec3(r.vec3(j->at("eye"), "camera.eye", kAnyNumber));
+  camera.target = glm::vec3(r.vec3(j->at("target"), "camera.target", kAnyNumber));
+  if (const json* v = Reader::find(*j, "up")) camera.up = glm::vec3(r.vec3(*v, "camera.up", kAnyNumber));
+  if (const json* v = Reader::find(*j, "fovy_deg"))
+    camera.fovy_deg = float(r.number(*v, "camera.fovy_deg", kFovyRange));
+  if (const json* v = Reader::find(*j, "near"))
+    camera.near = float(r.number(*v, "camera.near", kPositive));
+  if (const json* v = Reader::find(*j, "far"))
+    camera.far = float(r.number(*v, "camera.far", kPositive));
+  if (auto [key, problem] = camera_problem(camera); !key.empty())
+    r.fail(json_path::child("camera", key), problem);
+  return camera;
+}
+
+}  // namespace fastshade
