@@ -24,24 +24,39 @@ struct MeshLoadOptions {
   bool weld = false;  // merge vertices with bit-equal positions before anything else
 };
 
-// Loads OBJ, OFF, PLY or STL through OpenMesh and checks it: throws InputError naming the
-// file for a missing/unreadable file, a directory, no faces, lying headers, out-of-range
-// indices, NaN/Inf coordinates, or text that is not 8-bit (UTF-16).
+// Loads OBJ, OFF, PLY or STL (extension in any case) through OpenMesh and checks it: throws
+// InputError, one line "PATH: problem", for a missing/unreadable/empty file, a directory, an
+// unknown extension, no faces (a point cloud), header counts the file size cannot hold, face
+// indices out of range (or 0 in OBJ), faces with < 3 vertices, NaN/Inf coordinates, text that
+// is not 8-bit (UTF-16), and anything OpenMesh fails to read or silently skips.
+// Kept as in the file: zero-area faces, unreferenced vertices, any winding. Polygons become fan
+// triangles. Faces whose vertex indices repeat are dropped (a halfedge mesh cannot hold them;
+// they have zero area). At non-manifold vertices and edges OpenMesh adds copies of vertices, and
+// binary/ASCII STL vertices are merged by position on read: the vertex count is OpenMesh's.
+// Normals: File takes the file's (every vertex a face uses must have a finite non-zero one,
+// else InputError; "no vertex normals in file" if it has none), normalised; Auto takes them if
+// so, else recomputes; Recompute ignores them. Vertices on no face get +Z.
+// weld merges bit-equal positions after loading, before normals (first vertex's normal kept).
+// Thread-safe; OpenMesh reads themselves are serialised.
 Mesh load_mesh(const std::filesystem::path& path, const MeshLoadOptions& options = {});
 
-// Area-weighted vertex normals from the faces; vertices on no (non-degenerate) face get +Z.
+// Area-weighted vertex normals: each vertex gets the normalised sum of the unnormalised cross
+// products of its triangles (summed in double). Zero-area triangles add nothing; a vertex whose
+// sum is zero or non-finite (on no triangle, or only on degenerate ones) gets +Z. Throws
+// InputError(mesh.source, ...) if a triangle index is out of range.
 void recompute_normals(Mesh& mesh);
 
 struct MeshInfo {
-  std::size_t vertices = 0;
-  std::size_t faces = 0;  // triangles after triangulation
-  std::size_t zero_area_faces = 0;
-  std::size_t unreferenced_vertices = 0;
-  std::size_t boundary_edges = 0;  // as OpenMesh's halfedge structure sees them
-  glm::vec3 bbox_min{0.0f}, bbox_max{0.0f};
-  bool has_normals = false;
+  std::size_t vertices = 0;  // as OpenMesh holds them (its non-manifold copies included)
+  std::size_t faces = 0;     // triangles after triangulation
+  std::size_t zero_area_faces = 0;        // cross product exactly 0 in double
+  std::size_t unreferenced_vertices = 0;  // on no face
+  std::size_t boundary_edges = 0;         // as OpenMesh's halfedge structure sees them
+  glm::vec3 bbox_min{0.0f}, bbox_max{0.0f};  // over all vertices, unreferenced ones included
+  bool has_normals = false;  // the file gives a normal to every vertex a face uses
 };
 
+// Reads the file exactly as load_mesh does (same checks, same InputErrors) and counts.
 MeshInfo inspect_mesh(const std::filesystem::path& path);
 
 }  // namespace fastshade

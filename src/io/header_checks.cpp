@@ -1,0 +1,345 @@
+// OFF, PLY and STL checks: header counts against the file size, ASCII bodies all numbers.
+//
+// Lower bounds on the data a header's counts need, so a lying header is caught before OpenMesh
+// reserves memory for it (it does, with the raw counts) or loops over billions of records:
+// - binary: each record needs the sum of its scalar property sizes, plus a list's count field;
+//   a face's vertex list also needs 3 indices (a face with fewer is rejected anyway), so a PLY
+//   `list uchar int` face needs >= 1 + 3*4 = 13 bytes and an OFF BINARY face >= 4 + 3*4 = 16.
+// - ASCII: each value is a token of >= 1 character, and tokens are separated by >= 1
+//   whitespace character, so T tokens need >= 2*T - 1 bytes. An OFF vertex is >= 3 tokens
+//   (>= 6 bytes with its separator), an OFF face >= 4 ("3 0 1 2", >= 8 bytes), a PLY record
+//   one token per scalar, 1 per list count and 3 more for a face's vertex list.
+#include <cctype>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "io/mesh_checks.h"
+#include "io/text_scan.h"
+
+namespace fastshade::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Cursor {
+  std::string_view text;
+  std::size_t pos = 0;
+  std::size_t line_number = 0;  // of the last line returned
+  // The next line without its '\n' (and '\r'); false at the end.
+  bool next_line(std::string_view& line) {
+    if (pos >= text.size()) return false;
+    std::size_t end = text.find('\n', pos);
+    const bool complete = end != std::string_view::npos;
+    if (!complete) end = text.size();
+    line = text.substr(pos, end - pos);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    pos = complete ? end + 1 : end;
+    ++line_number;
+    return true;
+  }
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> tokens(std::string_view line) {
+  std::vector<std::string_view> out;
+  for_each_token(line, [&](std::string_view tok) {
+    out.push_back(tok);
+    return true;
+  });
+  return out;
+}
+
+// "header declares 8 vertices and 353535235358 faces but the file has 309 bytes ..."
+[[noreturn]] void fail_counts(const fs::path& path, uint64_t vertices, uint64_t faces,
+                              std::uintmax_t file_size, double needed_bytes) {
+  char needed[64];
+  std::snprintf(needed, sizeof needed, "%.0f", needed_bytes);
+  fail(path, "header declares " + std::to_string(vertices) + " vertices and " +
+                 std::to_string(faces) + " faces but the file has " + std::to_string(file_size) +
+                 " bytes (that many need at least " + needed + ")");
+}
+
+bool read_u32_le(std::string_view data, std::size_t at, uint32_t& out) {
+  if (data.size() < at + 4) return false;
+  const auto* b = reinterpret_cast<const unsigned char*>(data.data() + at);
+  out = uint32_t{b[0]} | uint32_t{b[1]} << 8 | uint32_t{b[2]} << 16 | uint32_t{b[3]} << 24;
+  return true;
+}
+
+}  // namespace
+
+std::uint64_t scan_numeric_body(const fs::path& path, std::string_view body,
+                                std::size_t first_line) {
+  uint64_t count = 0;
+  std::size_t line = first_line;
+  std::size_t i = 0;
+  while (i < body.size()) {
+    const char c = body[i];
+    if (is_space(c)) {
+      if (c == '\n') ++line;
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < body.size() && !is_space(body[i])) ++i;
+    const std::string_view tok = body.substr(start, i - start);
+    double value = 0.0;
+    switch (parse_number(tok, value)) {
+      case NumberStatus::NotANumber:
+        fail(path, "line " + std::to_string(line) + ": expected a number, found " + quote(tok));
+      case NumberStatus::NotFinite:
+        fail(path, "line " + std::to_string(line) + ": non-finite number " + quote(tok));
+      case NumberStatus::Ok:
+        break;
+    }
+    ++count;
+  }
+  return count;
+}
+
+void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
+  const std::string_view head = file.head();
+  Cursor cur{head};
+  std::string_view first;
+  cur.next_line(first);
+  // [ST][C][N][4][n]OFF [BINARY], as OpenMesh's reader accepts it.
+  std::string_view magic = trim(first);
+  bool texcoords = false, normals = false;
+  if (magic.substr(0, 2) == "ST") texcoords = true, magic.remove_prefix(2);
+  if (magic.substr(0, 1) == "C") magic.remove_prefix(1);
+  if (magic.substr(0, 1) == "N") normals = true, magic.remove_prefix(1);
+  if (magic.substr(0, 1) == "4" || magic.substr(0, 1) == "n") {
+    fail(path, "4OFF / nOFF (4-D or n-D vertices) is not supported");
+  }
+  if (magic.substr(0, 3) != "OFF") {
+    fail(path, "not an OFF file: the first line is " + quote(first) + ", expected OFF");
+  }
+  const std::string_view rest = trim(magic.substr(3));
+  const bool binary = rest == "BINARY";
+  if (!binary && !rest.empty()) {
+    fail(path, "unexpected " + quote(rest) +
+                   " after OFF on the first line (the counts go on the next line)");
+  }
+  const uint64_t per_vertex = 3 + (normals ? 3 : 0) + (texcoords ? 2 : 0);  // values
+
+  if (binary) {
+    uint32_t nv = 0, nf = 0, ne = 0;
+    if (!read_u32_le(head, cur.pos, nv) || !read_u32_le(head, cur.pos + 4, nf) ||
+        !read_u32_le(head, cur.pos + 8, ne)) {
+      fail(path, "OFF BINARY header ends before its vertex, face and edge counts");
+    }
+    const double needed = double(cur.pos) + 12.0 + double(nv) * double(4 * per_vertex) +
+                          double(nf) * 16.0;
+    if (needed > double(file.size())) fail_counts(path, nv, nf, file.size(), needed);
+    out.declared_vertices = nv;
+    out.declared_faces = nf;
+    return;
+  }
+
+  const std::string_view text = file.all();
+  check_no_nul(path, text);
+  const std::string_view body = text.substr(cur.pos);
+  // The three counts: OpenMesh reads them with `>> unsigned`, comments are not supported.
+  uint64_t counts[3] = {0, 0, 0};
+  int found = 0;
+  Cursor counts_cur{body};
+  std::string_view line;
+  while (found < 3 && counts_cur.next_line(line)) {
+    for_each_token(line, [&](std::string_view tok) {
+      int64_t value = -1;
+      if (!parse_integer(tok, value) || value < 0) {
+        fail(path, "line " + std::to_string(1 + counts_cur.line_number) +
+                       ": expected the vertex, face and edge counts, found " + quote(tok));
+      }
+      counts[found++] = static_cast<uint64_t>(value);
+      return found < 3;
+    });
+  }
+  if (found < 3) fail(path, "OFF header ends before its vertex, face and edge counts");
+  const double tokens_needed = 3.0 + double(counts[0]) * double(per_vertex) + double(counts[1]) * 4.0;
+  const double bytes_needed = double(cur.pos) + 2.0 * tokens_needed - 1.0;
+  if (bytes_needed > double(file.size())) {
+    fail_counts(path, counts[0], counts[1], file.size(), bytes_needed);
+  }
+  const uint64_t tokens_found = scan_numeric_body(path, body, 2);
+  if (double(tokens_found) < tokens_needed) {
+    fail(path, "truncated: the header declares " + std::to_string(counts[0]) + " vertices and " +
+                   std::to_string(counts[1]) + " faces, which need at least " +
+                   std::to_string(uint64_t(tokens_needed)) + " numbers, but the file has " +
+                   std::to_string(tokens_found));
+  }
+  out.declared_vertices = counts[0];
+  out.declared_faces = counts[1];
+}
+
+void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
+  const std::string_view head = file.head();
+  Cursor cur{head};
+  std::string_view line;
+  cur.next_line(line);
+  if (trim(line) != "ply") {
+    fail(path, "not a PLY file: the first line is " + quote(line) + ", expected ply");
+  }
+
+  struct Element {
+    std::string name;
+    uint64_t count = 0;
+    uint64_t min_bytes = 0;   // binary
+    uint64_t min_tokens = 0;  // ASCII
+    bool has_xyz[3] = {false, false, false};
+  };
+  std::vector<Element> elements;
+  std::string format;
+  bool ended = false;
+  const auto scalar_size = [&](std::string_view type) -> uint64_t {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
+        type == "float" || type == "float32") {
+      return 4;
+    }
+    if (type == "double" || type == "float64") return 8;
+    fail(path, "line " + std::to_string(cur.line_number) + ": unknown PLY property type " +
+                   quote(type));
+  };
+  while (cur.next_line(line)) {
+    const auto tok = tokens(line);
+    if (tok.empty()) continue;
+    const auto at_line = [&] { return "line " + std::to_string(cur.line_number) + ": "; };
+    if (tok[0] == "end_header") {
+      ended = true;
+      break;
+    }
+    if (tok[0] == "format") {
+      if (tok.size() < 2 || (tok[1] != "ascii" && tok[1] != "binary_little_endian" &&
+                             tok[1] != "binary_big_endian")) {
+        fail(path, at_line() + "unknown PLY format " + quote(line));
+      }
+      format = std::string(tok[1]);
+    } else if (tok[0] == "element") {
+      int64_t count = -1;
+      if (tok.size() != 3 || !parse_integer(tok[2], count) || count < 0) {
+        fail(path, at_line() + "expected 'element NAME COUNT', found " + quote(line));
+      }
+      elements.push_back({std::string(tok[1]), static_cast<uint64_t>(count)});
+    } else if (tok[0] == "property") {
+      if (elements.empty()) fail(path, at_line() + "property before any element");
+      Element& e = elements.back();
+      if (tok.size() >= 2 && tok[1] == "list") {
+        if (tok.size() != 5) {
+          fail(path, at_line() + "expected 'property list COUNT_TYPE TYPE NAME', found " +
+                         quote(line));
+        }
+        const uint64_t count_size = scalar_size(tok[2]);
+        const uint64_t item_size = scalar_size(tok[3]);
+        const bool face_vertices =
+            e.name == "face" && (tok[4] == "vertex_indices" || tok[4] == "vertex_index");
+        e.min_bytes += count_size + (face_vertices ? 3 * item_size : 0);
+        e.min_tokens += 1 + (face_vertices ? 3 : 0);
+      } else {
+        if (tok.size() != 3) {
+          fail(path, at_line() + "expected 'property TYPE NAME', found " + quote(line));
+        }
+        e.min_bytes += scalar_size(tok[1]);
+        e.min_tokens += 1;
+        for (int axis = 0; axis < 3; ++axis) {
+          if (tok[2] == std::string_view("xyz" + axis, 1)) e.has_xyz[axis] = true;
+        }
+      }
+    }
+    // comment, obj_info and anything else: OpenMesh skips them, and so do we.
+  }
+  if (!ended) {
+    check_no_nul(path, head);
+    fail(path, "PLY header has no end_header line in its first " +
+                   std::to_string(head.size()) + " bytes");
+  }
+  check_no_nul(path, head.substr(0, cur.pos));
+  if (format.empty()) fail(path, "PLY header has no format line");
+
+  uint64_t vertices = 0, faces = 0;
+  double min_bytes = 0.0, min_tokens = 0.0;
+  for (const Element& e : elements) {
+    if (e.name == "vertex") {
+      vertices = e.count;
+      if (!(e.has_xyz[0] && e.has_xyz[1] && e.has_xyz[2])) {
+        fail(path, "the PLY vertex element lacks an x, y or z property");
+      }
+    }
+    if (e.name == "face") faces = e.count;
+    min_bytes += double(e.count) * double(e.min_bytes);
+    min_tokens += double(e.count) * double(e.min_tokens);
+  }
+  const double body_bytes = double(file.size()) - double(cur.pos);
+  if (format == "ascii") {
+    if (min_tokens > 0 && 2.0 * min_tokens - 1.0 > body_bytes) {
+      fail_counts(path, vertices, faces, file.size(), double(cur.pos) + 2.0 * min_tokens - 1.0);
+    }
+    const std::string_view text = file.all();
+    check_no_nul(path, text);
+    const uint64_t found = scan_numeric_body(path, text.substr(cur.pos), cur.line_number + 1);
+    if (double(found) < min_tokens) {
+      fail(path, "truncated: the header declares " + std::to_string(vertices) +
+                     " vertices and " + std::to_string(faces) + " faces, which need at least " +
+                     std::to_string(uint64_t(min_tokens)) + " numbers, but the file has " +
+                     std::to_string(found));
+    }
+  } else if (min_bytes > body_bytes) {
+    fail_counts(path, vertices, faces, file.size(), double(cur.pos) + min_bytes);
+  }
+  out.declared_vertices = vertices;
+  out.declared_faces = faces;
+}
+
+void check_stl(const fs::path& path, FileBytes& file) {
+  const std::string_view head = file.head();
+  // OpenMesh's rule: binary exactly when 84 + 50 * (triangle count at byte 80) is the size.
+  uint32_t triangles = 0;
+  const bool has_count = read_u32_le(head, 80, triangles);
+  const uint64_t binary_size = 84 + 50 * uint64_t{triangles};
+  if (has_count && binary_size == file.size()) return;
+
+  if (head.size() >= 2 && ((head[0] == '\xFF' && head[1] == '\xFE') ||
+                           (head[0] == '\xFE' && head[1] == '\xFF'))) {
+    fail(path, std::string("UTF-16 text (byte-order mark ") +
+                   (head[0] == '\xFF' ? "FF FE" : "FE FF") + "): save the file as ASCII or UTF-8");
+  }
+  std::string_view start = trim(head.substr(0, 64));
+  std::string first(start.substr(0, 5));
+  for (char& c : first) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (first != "solid") {
+    fail(path, "neither a binary STL (" +
+                   (has_count ? "its header says " + std::to_string(triangles) +
+                                    " triangles, which need " + std::to_string(binary_size) +
+                                    " bytes, but the file has " + std::to_string(file.size())
+                              : "shorter than the 84-byte header") +
+                   ") nor an ASCII STL (it does not start with 'solid')");
+  }
+  const std::string_view text = file.all();
+  check_no_nul(path, text);
+  // OpenMesh reads `vertex x y z` with `stream >> float`: "nan" would leave stale values.
+  Cursor cur{text};
+  std::string_view line;
+  while (cur.next_line(line)) {
+    const auto tok = tokens(line);
+    if (tok.empty() || (tok[0] != "vertex" && tok[0] != "VERTEX")) continue;
+    bool ok = tok.size() >= 4;
+    for (std::size_t i = 1; ok && i < 4; ++i) {
+      double value = 0.0;
+      ok = parse_number(tok[i], value) == NumberStatus::Ok;
+    }
+    if (!ok) {
+      fail(path, "line " + std::to_string(cur.line_number) +
+                     ": a vertex needs 3 finite numbers, found " + quote(trim(line)));
+    }
+  }
+}
+
+}  // namespace fastshade::io
