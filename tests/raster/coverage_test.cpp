@@ -138,7 +138,7 @@ bool brute_force_hit(const Tri& t, double x_px, double y_px, int width, int heig
 bool ambiguous(const Tri& t, int x, int y, int width, int height) {
   const double c = brute_force_hit(t, x + 0.5, y + 0.5, width, height);
   const double e = 1.0 / 64;
-  for (const auto [dx, dy] : {std::pair{e, 0.0}, {-e, 0.0}, {0.0, e}, {0.0, -e}})
+  for (const auto& [dx, dy] : {std::pair{e, 0.0}, {-e, 0.0}, {0.0, e}, {0.0, -e}})
     if (brute_force_hit(t, x + 0.5 + dx, y + 0.5 + dy, width, height) != c) return true;
   return false;
 }

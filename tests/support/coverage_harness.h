@@ -21,8 +21,8 @@ struct CoverageResult {
 
 // Adds 1 to the red channel of every covered pixel: no depth test, so overlaps show as 2+.
 inline void count_hits(const Frame& frame, uint32_t entry, const TileTarget& tt) {
-  const TriangleEdges edges = triangle_edges(frame.triangle(entry));
   const SetupTriangle& t = frame.triangle(entry);
+  const TriangleEdges edges = triangle_edges(t);
   const PixelRect r{std::max<int>(t.px_min[0], tt.rect.x0), std::max<int>(t.px_min[1], tt.rect.y0),
                     std::min<int>(t.px_max[0], tt.rect.x1), std::min<int>(t.px_max[1], tt.rect.y1)};
   if (r.x0 > r.x1 || r.y0 > r.y1) return;

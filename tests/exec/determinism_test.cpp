@@ -1,0 +1,48 @@
+// The same scene gives a byte-identical image for any thread count and any tile size.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "fastshade/render.h"
+#include "fastshade/scene.h"
+
+namespace fastshade {
+namespace {
+
+void expect_identical_across_threads_and_tiles(const Scene& scene, const std::string& method,
+                                               const std::string& name) {
+  RenderOptions base;
+  base.method = method;
+  base.threads = 1;
+  base.tile_px = 64;
+  const Image expected = render(scene, base);
+  for (int threads : {1, 2, 4})
+    for (int tile : {8, 16, 64, 256}) {
+      RenderOptions o = base;
+      o.threads = threads;
+      o.tile_px = tile;
+      const Image got = render(scene, o);
+      ASSERT_EQ(got.rgb.size(), expected.rgb.size());
+      std::size_t first_diff = 0;
+      while (first_diff < got.rgb.size() && got.rgb[first_diff] == expected.rgb[first_diff]) ++first_diff;
+      EXPECT_EQ(first_diff, got.rgb.size())
+          << name << " " << method << ": threads " << threads << " tile " << tile
+          << " differs at pixel (" << (first_diff / 3) % got.width << ", "
+          << (first_diff / 3) / got.width << ")";
+    }
+}
+
+TEST(Determinism, SceneFilesAreByteIdenticalForAnyThreadsAndTiles) {
+  const std::filesystem::path scenes = std::filesystem::path(FASTSHADE_SOURCE_DIR) / "scenes";
+  int count = 0;
+  for (const char* file : {"default.json", "spheres.json", "torus_local.json"}) {
+    const Scene scene = load_scene(scenes / file);
+    for (const char* method : {"phong", "gouraud", "reference"})
+      expect_identical_across_threads_and_tiles(scene, method, file);
+    ++count;
+  }
+  EXPECT_EQ(count, 3);
+}
+
+}  // namespace
+}  // namespace fastshade
