@@ -37,9 +37,9 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
                                                int width, int height, int tile_px,
                                                int per_chunk = 64, Cull cull = Cull::None) {
   SceneGeometry g;
-  for (const auto& t : tris) {
+  for (std::size_t n = 0; n < tris.size(); ++n) {
     const uint32_t base = static_cast<uint32_t>(g.positions.size());
-    for (int i = 0; i < 3; ++i) g.positions.push_back(glm::vec3(0));
+    g.positions.resize(base + 3, glm::vec3(0));
     g.triangles.push_back({base, base + 1, base + 2});
     g.triangle_material.push_back(0);
   }
