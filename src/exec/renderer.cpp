@@ -82,10 +82,10 @@ struct Renderer::Impl {
   ViewTransform xf;
   AttrNeeds needs;
   DrawTriangleFn draw;
-  Cull cull;
   tbb::task_arena arena;
   Frame frame;
-  std::vector<glm::vec4> clip_pos;
+  ProjectedVertices vertices;
+  SetupParams setup;
   TileExecutor executor;
   RenderStats stats;
 
@@ -94,13 +94,15 @@ struct Renderer::Impl {
         geometry(flatten_scene(scene)),
         method(find_method(o.method)),
         xf(view_transform(scene)),
-        cull(scene.cull),
         arena(o.threads > 0 ? o.threads : tbb::info::default_concurrency()) {
     select_isa(o.isa);
     frame.grid = make_grid(scene.width, scene.height, o.tile_px);
     frame.shade = shade_constants(scene, xf, o.srgb);
     needs = method->needs(frame.shade);
     draw = method->select(frame.shade);
+    setup.viewport = make_viewport(scene.width, scene.height);
+    setup.cull = scene.cull;
+    setup.with_attrs = needs.normal || needs.color || needs.position;
     const std::size_t chunks =
         (geometry.triangles.size() + limits::kTrianglesPerChunk - 1) / limits::kTrianglesPerChunk;
     frame.chunks.resize(chunks);
@@ -120,13 +122,12 @@ struct Renderer::Impl {
     StageTimes t;
     arena.execute([&] {
       const auto t0 = Clock::now();
-      run_vertex_stage(geometry, xf, needs, frame.shade, clip_pos, frame.attrs);
-      const SetupParams params = setup_params(frame.grid, cull, needs.normal || needs.color || needs.position);
+      run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
       const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());
       tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
         const uint32_t first = static_cast<uint32_t>(c * limits::kTrianglesPerChunk);
         const uint32_t last = std::min<uint32_t>(first + limits::kTrianglesPerChunk, n_tris);
-        setup_chunk(geometry, clip_pos, frame.attrs, first, last, params, frame.chunks[c]);
+        setup_chunk(geometry, vertices, frame.attrs, first, last, setup, frame.chunks[c]);
       });
       t.front_end = ms_since(t0);
 

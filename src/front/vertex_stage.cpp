@@ -43,10 +43,10 @@ ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool
   return k;
 }
 
-void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const AttrNeeds& needs,
-                      const ShadeConstants& shade, std::vector<glm::vec4>& clip_pos,
+void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Viewport& vp,
+                      const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
                       std::vector<VertexAttrs>& attrs) {
-  clip_pos.resize(g.positions.size());
+  out.resize(g.positions.size());
   attrs.resize(needs.normal || needs.color || needs.position ? g.positions.size() : 0);
   for (const ObjectRange& o : g.objects) {
     const glm::mat4 model_view = xf.view * o.model;
@@ -58,7 +58,7 @@ void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Att
         [&](const tbb::blocked_range<uint32_t>& r) {
           for (uint32_t i = r.begin(); i != r.end(); ++i) {
             const glm::vec4 pos_view = model_view * glm::vec4(g.positions[i], 1.0f);
-            clip_pos[i] = proj * pos_view;
+            out.store(i, proj * pos_view, vp);
             if (attrs.empty()) continue;
             VertexAttrs& a = attrs[i];
             a.pos_view = glm::vec3(pos_view);

@@ -7,6 +7,7 @@
 #include <glm/vec4.hpp>
 
 #include "frame/frame.h"
+#include "front/projection.h"
 #include "front/scene_geometry.h"
 
 namespace fastshade {
@@ -21,9 +22,28 @@ struct ViewTransform {
 
 ViewTransform view_transform(const Scene& scene);
 
-// Parallel over vertices. `clip_pos` and `attrs` are resized; their capacity is reused.
-void run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, const AttrNeeds& needs,
-                      const ShadeConstants& shade, std::vector<glm::vec4>& clip_pos,
+// Every vertex transformed once: clip position (for the clipper), flags, and, for vertices
+// that need no clipping, the snapped screen position the triangles share.
+struct ProjectedVertices {
+  std::vector<glm::vec4> clip;
+  std::vector<ScreenVertex> screen;
+  std::vector<uint8_t> flags;
+
+  void resize(std::size_t n) {
+    clip.resize(n);
+    screen.resize(n);
+    flags.resize(n);
+  }
+  void store(std::size_t i, const glm::vec4& pos_clip, const Viewport& vp) {
+    clip[i] = pos_clip;
+    flags[i] = vertex_flags(pos_clip, vp);
+    if (!(flags[i] & (kNeedsClip | kNonFinite))) screen[i] = project(pos_clip, vp);
+  }
+};
+
+// Parallel over vertices. Outputs are resized; their capacity is reused across frames.
+void run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, const Viewport& vp,
+                      const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
                       std::vector<VertexAttrs>& attrs);
 
 // Lights to view space and the infinite viewer's half vectors; materials as constants.

@@ -43,8 +43,11 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
     g.triangles.push_back({base, base + 1, base + 2});
     g.triangle_material.push_back(0);
   }
-  std::vector<glm::vec4> clip;
-  for (const auto& t : tris) clip.insert(clip.end(), t.begin(), t.end());
+  const Viewport viewport = make_viewport(width, height);
+  ProjectedVertices vertices;
+  vertices.resize(g.positions.size());
+  for (std::size_t n = 0; n < tris.size(); ++n)
+    for (int i = 0; i < 3; ++i) vertices.store(n * 3 + i, tris[n][i], viewport);
 
   Frame frame;
   frame.grid.width = width;
@@ -54,12 +57,12 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
   frame.grid.tiles_x = (width + tile_px - 1) / tile_px;
   frame.grid.tiles_y = (height + tile_px - 1) / tile_px;
   frame.shade.background = glm::vec3(0);
-  const SetupParams params = setup_params(frame.grid, cull, false);
+  const SetupParams params{viewport, cull, false};
   const uint32_t n = static_cast<uint32_t>(tris.size());
   frame.chunks.resize((n + per_chunk - 1) / per_chunk);
   CoverageResult out;
   for (uint32_t c = 0; c < frame.chunks.size(); ++c) {
-    setup_chunk(g, clip, frame.attrs, c * per_chunk, std::min<uint32_t>((c + 1) * per_chunk, n), params,
+    setup_chunk(g, vertices, frame.attrs, c * per_chunk, std::min<uint32_t>((c + 1) * per_chunk, n), params,
                 frame.chunks[c]);
     count_chunk_bins(frame.grid, frame.chunks[c]);
     out.dropped += frame.chunks[c].dropped;
