@@ -3,6 +3,8 @@
 // so coverage is the same whatever the method, tile size or thread.
 #pragma once
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include "frame/edge_function.h"
@@ -15,54 +17,128 @@ struct PixelRect {  // inclusive pixel bounds
 
 namespace detail {
 
-// Shrinks [lo, hi] (offsets k from the row's first pixel) to where e_row + step*k >= threshold.
-// The double quotient is within one of the exact bound (|values| < 2^49, exact in a double),
-// and the integer loops settle it exactly.
-inline void clip_run(int64_t e_row, int64_t step, int64_t threshold, int& lo, int& hi) {
-  if (step == 0) {
-    if (e_row < threshold) hi = lo - 1;
-    return;
-  }
-  const int64_t need = threshold - e_row;  // step * k >= need
-  if (step > 0) {
-    if (need <= 0) return;  // the whole row, since k >= 0
-    int64_t k = static_cast<int64_t>(static_cast<double>(need) / static_cast<double>(step));
-    k = std::clamp<int64_t>(k, 0, hi + 1);
-    while (k > 0 && step * (k - 1) >= need) --k;
-    while (k <= hi && step * k < need) ++k;
-    lo = std::max<int>(lo, static_cast<int>(k));
-  } else {
-    if (need > 0) {  // even k = 0 fails, and it only gets worse
-      hi = lo - 1;
-      return;
-    }
-    int64_t k = static_cast<int64_t>(static_cast<double>(need) / static_cast<double>(step));
-    k = std::clamp<int64_t>(k, -1, hi);
-    while (k < hi && step * (k + 1) >= need) ++k;
-    while (k >= 0 && step * k < need) --k;
-    hi = std::min<int>(hi, static_cast<int>(k));
-  }
+// floor(n / d) for d > 0. |n| < 2^50 here, so the double quotient is within one of the
+// answer and the integer checks settle it; cheaper than a 64-bit division.
+inline int64_t floor_div(int64_t n, int64_t d) {
+  int64_t q = static_cast<int64_t>(std::floor(static_cast<double>(n) / static_cast<double>(d)));
+  if (q * d > n) --q;
+  else if ((q + 1) * d <= n) ++q;
+  return q;
 }
+
+// One edge's limit on a row's run of pixel offsets k (from the rectangle's left column),
+// stepped from row to row exactly in integers, like a Bresenham line: no division per row.
+// With E(k) = e + s k the edge accepts E(k) >= t, which for s > 0 is k >= ceil((t - e) / s)
+// and for s < 0 is k <= floor((e - t) / -s). The bound is kept as quotient and remainder.
+struct EdgeBound {
+  int64_t q = 0, rem = 0;         // bound and remainder in [0, |s|)
+  int64_t dq = 0, drem = 0;       // the per-row change, split the same way
+  int64_t abs_s = 0;
+  int64_t e = 0, e_step = 0, t = 0;  // s == 0: the edge value itself decides the whole row
+  int sign = 0;                   // sign of s: +1 lower bound, -1 upper bound
+
+  void init(int64_t e_row, int64_t s, int64_t row_step, int64_t threshold) {
+    sign = s > 0 ? 1 : (s < 0 ? -1 : 0);
+    e = e_row;
+    e_step = row_step;
+    t = threshold;
+    if (sign == 0) return;
+    abs_s = s > 0 ? s : -s;
+    // Lower bound: ceil(n / s) with n = t - e, held as n = q s - rem. Moving down a row adds
+    // row_step to e, i.e. subtracts it from n. Upper bound: floor(n / |s|) with n = e - t,
+    // held as n = q |s| + rem; moving down adds row_step to n.
+    if (sign > 0) {
+      const int64_t n = threshold - e_row;
+      q = -floor_div(-n, abs_s);
+      rem = q * abs_s - n;
+      // row_step = a s + b with b in [0, s): n' = n - row_step = (q - a) s - (rem + b).
+      const int64_t a = floor_div(row_step, abs_s);
+      dq = -a;
+      drem = row_step - a * abs_s;
+    } else {
+      const int64_t n = e_row - threshold;
+      q = floor_div(n, abs_s);
+      rem = n - q * abs_s;
+      dq = floor_div(row_step, abs_s);
+      drem = row_step - dq * abs_s;
+    }
+  }
+
+  void next_row() {
+    if (sign > 0) {
+      // rem + b may reach s: then (q - a) s - r = (q - a - 1) s - (r - s).
+      q += dq;
+      rem += drem;
+      if (rem >= abs_s) {
+        rem -= abs_s;
+        q -= 1;
+      }
+    } else if (sign < 0) {
+      q += dq;
+      rem += drem;
+      if (rem >= abs_s) {
+        rem -= abs_s;
+        q += 1;
+      }
+    } else {
+      e += e_step;
+    }
+  }
+
+  void clip(int64_t& lo, int64_t& hi) const {
+    if (sign > 0) lo = std::max(lo, q);
+    else if (sign < 0) hi = std::min(hi, q);
+    else if (e < t) hi = lo - 1;
+  }
+};
 
 }  // namespace detail
 
+// Below this width a row is tested pixel by pixel: cheaper than stepping three bounds.
+inline constexpr int kNarrowRectPx = 16;
+
 // Calls span(py, x_first, x_last) for every row of `rect` with covered pixels, top to bottom.
+// Exact: the same pixels as testing every centre against the three edge functions.
 template <typename SpanFn>
 inline void for_each_span(const TriangleEdges& te, const PixelRect& rect, SpanFn&& span) {
-  const int width = rect.x1 - rect.x0;
-  int64_t e_row[3], step_x[3], step_y[3];
+  const int64_t width = rect.x1 - rect.x0;
+  if (width < kNarrowRectPx) {
+    // Narrow rectangles (most triangles of a dense mesh): test every pixel centre of the row,
+    // branch-free, into a bit mask; a row's coverage is one run since triangles are convex.
+    int64_t e_row[3], step_x[3], step_y[3];
+    for (int k = 0; k < 3; ++k) {
+      e_row[k] = te.e[k].at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0));
+      step_x[k] = te.e[k].a * limits::kSubpixelOne;
+      step_y[k] = te.e[k].b * limits::kSubpixelOne;
+    }
+    for (int py = rect.y0; py <= rect.y1; ++py) {
+      uint32_t covered = 0;
+      int64_t e0 = e_row[0], e1 = e_row[1], e2 = e_row[2];
+      for (int k = 0; k <= width; ++k) {
+        covered |= uint32_t((e0 >= te.e[0].threshold) & (e1 >= te.e[1].threshold) &
+                            (e2 >= te.e[2].threshold))
+                   << k;
+        e0 += step_x[0];
+        e1 += step_x[1];
+        e2 += step_x[2];
+      }
+      if (covered)
+        span(py, rect.x0 + std::countr_zero(covered), rect.x0 + 31 - std::countl_zero(covered));
+      for (int k = 0; k < 3; ++k) e_row[k] += step_y[k];
+    }
+    return;
+  }
+  detail::EdgeBound bound[3];
   for (int k = 0; k < 3; ++k) {
     const Edge& e = te.e[k];
-    e_row[k] = e.at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0));
-    step_x[k] = e.a * limits::kSubpixelOne;
-    step_y[k] = e.b * limits::kSubpixelOne;
+    bound[k].init(e.at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0)),
+                  e.a * limits::kSubpixelOne, e.b * limits::kSubpixelOne, e.threshold);
   }
   for (int py = rect.y0; py <= rect.y1; ++py) {
-    int lo = 0, hi = width;
-    for (int k = 0; k < 3 && lo <= hi; ++k)
-      detail::clip_run(e_row[k], step_x[k], te.e[k].threshold, lo, hi);
-    if (lo <= hi) span(py, rect.x0 + lo, rect.x0 + hi);
-    for (int k = 0; k < 3; ++k) e_row[k] += step_y[k];
+    int64_t lo = 0, hi = width;
+    for (const detail::EdgeBound& b : bound) b.clip(lo, hi);
+    if (lo <= hi) span(py, rect.x0 + static_cast<int>(lo), rect.x0 + static_cast<int>(hi));
+    for (detail::EdgeBound& b : bound) b.next_row();
   }
 }
 

@@ -13,9 +13,19 @@ namespace fastshade {
 struct TriangleInTile {
   const SetupTriangle* tri;
   TriangleEdges edges;
-  Barycentrics bary;
   PixelRect rect;  // bounding box ∩ tile
+  // Barycentric gradients and the depth plane exist only once a span is found: a small
+  // triangle's box often holds pixel centres it does not cover.
+  Barycentrics bary;
   Plane depth;
+  bool has_planes = false;
+
+  void set_up_planes() {
+    if (has_planes) return;
+    bary = barycentrics(*tri, edges);
+    depth = make_plane(bary, tri->depth[0], tri->depth[1], tri->depth[2]);
+    has_planes = true;
+  }
 };
 
 // False if the triangle's bounding box misses the tile rectangle.
@@ -25,8 +35,7 @@ inline bool prepare_triangle(const SetupTriangle& t, const PixelRect& tile, Tria
   if (out.rect.x0 > out.rect.x1 || out.rect.y0 > out.rect.y1) return false;
   out.tri = &t;
   out.edges = triangle_edges(t);
-  out.bary = barycentrics(t, out.edges);
-  out.depth = make_plane(out.bary, t.depth[0], t.depth[1], t.depth[2]);
+  out.has_planes = false;
   return true;
 }
 

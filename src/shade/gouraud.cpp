@@ -20,33 +20,36 @@ HWY_INLINE void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
   const ShadeConstants& k = frame.shade;
-  glm::vec3 color[3];
-  for (int i = 0; i < 3; ++i) {
-    const VertexAttrs& v = frame.vertex(entry, t.attr[i]);
-    color[i] = v.color;
-    if (k.two_sided && (t.flags & kBackFacing)) {  // the vertex stage lit the front side only
-      const glm::vec3 v_view = k.local_viewer ? glm::normalize(-v.pos_view) : glm::vec3(0, 0, 1);
-      color[i] = glm::clamp(
-          blinn_phong<float>(-v.n_view, v_view, !k.local_viewer, k.materials[t.material], k), 0.0f,
-          1.0f);
+  double vertex_color[3][3];  // colour / w
+  // Planes are set up on the first vector that passes the depth test (see phong.cpp).
+  Plane c_over_w[3], inv_w;
+  bool planes_ready = false;
+  auto set_up_planes = [&] {
+    for (int i = 0; i < 3; ++i) {
+      const VertexAttrs& v = frame.vertex(entry, t.attr[i]);
+      glm::vec3 color = v.color;
+      if (k.two_sided && (t.flags & kBackFacing)) {  // the vertex stage lit the front side only
+        const glm::vec3 v_view = k.local_viewer ? glm::normalize(-v.pos_view) : glm::vec3(0, 0, 1);
+        color = glm::clamp(
+            blinn_phong<float>(-v.n_view, v_view, !k.local_viewer, k.materials[t.material], k),
+            0.0f, 1.0f);
+      }
+      for (int c = 0; c < 3; ++c) vertex_color[i][c] = double(color[c]) * t.inv_w[i];
     }
-  }
-  Plane c_over_w[3];
-  for (int c = 0; c < 3; ++c)
-    c_over_w[c] = make_plane(tri.bary, double(color[0][c]) * t.inv_w[0],
-                             double(color[1][c]) * t.inv_w[1], double(color[2][c]) * t.inv_w[2]);
-  const Plane inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+    for (int c = 0; c < 3; ++c)
+      c_over_w[c] = make_plane(tri.bary, vertex_color[0][c], vertex_color[1][c], vertex_color[2][c]);
+    inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+    planes_ready = true;
+  };
 
-  const DF d;
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
-    float row[3];
-    for (int c = 0; c < 3; ++c) row[c] = row_value(c_over_w[c], tri.bary, py);
-    const float w_row = row_value(inv_w, tri.bary, py);
-    ShadeSpan(tri, py, x0, x1, tt, [&](VF dx, MF) {
-      const VF w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, inv_w, w_row, dx));
-      return PackRGBA<kSrgb>(d, hn::Mul(EvalPlane(d, c_over_w[0], row[0], dx), w),
-                             hn::Mul(EvalPlane(d, c_over_w[1], row[1], dx), w),
-                             hn::Mul(EvalPlane(d, c_over_w[2], row[2], dx), w));
+    ShadeSpan(tri, py, x0, x1, tt, [&](auto d, auto dx, auto) {
+      if (!planes_ready) set_up_planes();
+      const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, inv_w, row_value(inv_w, tri.bary, py), dx));
+      auto channel = [&](int c) {
+        return hn::Mul(EvalPlane(d, c_over_w[c], row_value(c_over_w[c], tri.bary, py), dx), w);
+      };
+      return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
     });
   });
 }

@@ -27,62 +27,64 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
   const ShadeConstants& k = frame.shade;
   const MaterialConstants& m = k.materials[t.material];
   const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
-  const VertexAttrs* v[3] = {&frame.vertex(entry, t.attr[0]), &frame.vertex(entry, t.attr[1]),
-                             &frame.vertex(entry, t.attr[2])};
+  // Shading planes are set up on the first vector that passes the depth test: in a dense
+  // mesh many triangles are entirely hidden, and they cost only coverage and depth.
   PhongPlanes planes;
-  for (int c = 0; c < 3; ++c) {
-    planes.n[c] = make_plane(tri.bary, double(flip * v[0]->n_view[c]) * t.inv_w[0],
-                             double(flip * v[1]->n_view[c]) * t.inv_w[1],
-                             double(flip * v[2]->n_view[c]) * t.inv_w[2]);
-    if constexpr (kLocal)
-      planes.p[c] = make_plane(tri.bary, double(v[0]->pos_view[c]) * t.inv_w[0],
-                               double(v[1]->pos_view[c]) * t.inv_w[1],
-                               double(v[2]->pos_view[c]) * t.inv_w[2]);
-  }
-  if constexpr (kLocal) planes.inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
-
-  const DF d;
-  for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
-    float n_row[3], p_row[3], w_row = 0;
+  bool planes_ready = false;
+  auto set_up_planes = [&] {
+    const VertexAttrs* v[3] = {&frame.vertex(entry, t.attr[0]), &frame.vertex(entry, t.attr[1]),
+                               &frame.vertex(entry, t.attr[2])};
     for (int c = 0; c < 3; ++c) {
-      n_row[c] = row_value(planes.n[c], tri.bary, py);
-      if constexpr (kLocal) p_row[c] = row_value(planes.p[c], tri.bary, py);
+      planes.n[c] = make_plane(tri.bary, double(flip * v[0]->n_view[c]) * t.inv_w[0],
+                               double(flip * v[1]->n_view[c]) * t.inv_w[1],
+                               double(flip * v[2]->n_view[c]) * t.inv_w[2]);
+      if constexpr (kLocal)
+        planes.p[c] = make_plane(tri.bary, double(v[0]->pos_view[c]) * t.inv_w[0],
+                                 double(v[1]->pos_view[c]) * t.inv_w[1],
+                                 double(v[2]->pos_view[c]) * t.inv_w[2]);
     }
-    if constexpr (kLocal) w_row = row_value(planes.inv_w, tri.bary, py);
-    ShadeSpan(tri, py, x0, x1, tt, [&](VF dx, MF) {
-      VF nx = EvalPlane(d, planes.n[0], n_row[0], dx);
-      VF ny = EvalPlane(d, planes.n[1], n_row[1], dx);
-      VF nz = EvalPlane(d, planes.n[2], n_row[2], dx);
-      const VF len2 = hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz));
-      const VF inv_len =
+    if constexpr (kLocal) planes.inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+    planes_ready = true;
+  };
+
+  for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
+    ShadeSpan(tri, py, x0, x1, tt, [&](auto d, auto dx, auto) {
+      using V = decltype(dx);
+      if (!planes_ready) set_up_planes();
+      V nx = EvalPlane(d, planes.n[0], row_value(planes.n[0], tri.bary, py), dx);
+      V ny = EvalPlane(d, planes.n[1], row_value(planes.n[1], tri.bary, py), dx);
+      V nz = EvalPlane(d, planes.n[2], row_value(planes.n[2], tri.bary, py), dx);
+      const V len2 = hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz));
+      const V inv_len =
           hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), hn::Sqrt(len2)));
       nx = hn::Mul(nx, inv_len);
       ny = hn::Mul(ny, inv_len);
       nz = hn::Mul(nz, inv_len);
-      VF vx, vy, vz;  // toward the eye (local viewer only)
+      V vx, vy, vz;  // toward the eye (local viewer only)
       if constexpr (kLocal) {
-        const VF w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, planes.inv_w, w_row, dx));
-        vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], p_row[0], dx), w));
-        vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], p_row[1], dx), w));
-        vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], p_row[2], dx), w));
-        const VF inv = hn::Div(hn::Set(d, 1.0f),
-                               hn::Sqrt(hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)),
-                                                hn::Mul(vz, vz))));
+        const V w = hn::Div(hn::Set(d, 1.0f),
+                            EvalPlane(d, planes.inv_w, row_value(planes.inv_w, tri.bary, py), dx));
+        vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], row_value(planes.p[0], tri.bary, py), dx), w));
+        vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], row_value(planes.p[1], tri.bary, py), dx), w));
+        vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], row_value(planes.p[2], tri.bary, py), dx), w));
+        const V inv = hn::Div(hn::Set(d, 1.0f),
+                              hn::Sqrt(hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)),
+                                               hn::Mul(vz, vz))));
         vx = hn::Mul(vx, inv);
         vy = hn::Mul(vy, inv);
         vz = hn::Mul(vz, inv);
       }
-      VF r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
+      V r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
       for (const LightView& light : k.lights) {
-        const VF lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
-                 lz = hn::Set(d, light.l_view.z);
-        VF hx, hy, hz;
+        const V lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
+                lz = hn::Set(d, light.l_view.z);
+        V hx, hy, hz;
         if constexpr (kLocal) {
           hx = hn::Add(lx, vx);
           hy = hn::Add(ly, vy);
           hz = hn::Add(lz, vz);
-          const VF h2 = hn::Add(hn::Add(hn::Mul(hx, hx), hn::Mul(hy, hy)), hn::Mul(hz, hz));
-          const VF inv = hn::IfThenElseZero(hn::Gt(h2, hn::Zero(d)),
+          const V h2 = hn::Add(hn::Add(hn::Mul(hx, hx), hn::Mul(hy, hy)), hn::Mul(hz, hz));
+          const V inv = hn::IfThenElseZero(hn::Gt(h2, hn::Zero(d)),
                                             hn::Div(hn::Set(d, 1.0f), hn::Sqrt(h2)));
           hx = hn::Mul(hx, inv);
           hy = hn::Mul(hy, inv);
@@ -92,10 +94,10 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
           hy = hn::Set(d, light.h_view.y);
           hz = hn::Set(d, light.h_view.z);
         }
-        const VF ndl = hn::Add(hn::Add(hn::Mul(nx, lx), hn::Mul(ny, ly)), hn::Mul(nz, lz));
-        const VF ndh = hn::Add(hn::Add(hn::Mul(nx, hx), hn::Mul(ny, hy)), hn::Mul(nz, hz));
-        const VF diffuse = hn::Max(ndl, hn::Zero(d));
-        const VF specular = SpecularPower(d, ndh, m.shininess);
+        const V ndl = hn::Add(hn::Add(hn::Mul(nx, lx), hn::Mul(ny, ly)), hn::Mul(nz, lz));
+        const V ndh = hn::Add(hn::Add(hn::Mul(nx, hx), hn::Mul(ny, hy)), hn::Mul(nz, hz));
+        const V diffuse = hn::Max(ndl, hn::Zero(d));
+        const V specular = SpecularPower(d, ndh, m.shininess);
         r = hn::Add(r, hn::Mul(hn::Set(d, light.color.r),
                                hn::Add(hn::Mul(hn::Set(d, m.kd.r), diffuse),
                                        hn::Mul(hn::Set(d, m.ks.r), specular))));

@@ -25,6 +25,7 @@ void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   }
   const double inv_area = 1.0 / static_cast<double>(doubled_area(t));
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
+    tri.set_up_planes();
     const float depth_row = row_value(tri.depth, tri.bary, py);
     float* depth = tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin;
     uint32_t* color = tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin;

@@ -207,6 +207,10 @@ TEST(Coverage, AgreesWithBruteForceOnRandomTriangles) {
       for (auto& v : t)
         v = screen_to_clip(std::floor((u(rng) + 1.0f) * w * 0.6f) + 0.5,
                            std::floor((u(rng) + 1.0f) * h * 0.6f) + 0.5, w, h, v.w);
+    if (kind == 0 && n % 8 == 4) {  // small triangles take the narrow-rectangle path
+      const float cx = u(rng) * 0.8f, cy = u(rng) * 0.8f;
+      for (auto& v : t) v = glm::vec4(cx + 0.1f * u(rng), cy + 0.1f * u(rng), 0.5f * u(rng), 1.0f);
+    }
     bool needs_clip = false;
     for (const auto& v : t)
       needs_clip |= !(v.w > 0 && v.z >= -v.w && v.z <= v.w && std::fabs(v.x) <= 100 * v.w &&
