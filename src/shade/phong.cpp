@@ -55,8 +55,7 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
       V ny = EvalPlane(d, planes.n[1], row_value(planes.n[1], tri.bary, py), dx);
       V nz = EvalPlane(d, planes.n[2], row_value(planes.n[2], tri.bary, py), dx);
       const V len2 = hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz));
-      const V inv_len =
-          hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), hn::Sqrt(len2)));
+      const V inv_len = hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), InvSqrt(d, len2));
       nx = hn::Mul(nx, inv_len);
       ny = hn::Mul(ny, inv_len);
       nz = hn::Mul(nz, inv_len);
@@ -67,9 +66,8 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
         vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], row_value(planes.p[0], tri.bary, py), dx), w));
         vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], row_value(planes.p[1], tri.bary, py), dx), w));
         vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], row_value(planes.p[2], tri.bary, py), dx), w));
-        const V inv = hn::Div(hn::Set(d, 1.0f),
-                              hn::Sqrt(hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)),
-                                               hn::Mul(vz, vz))));
+        const V inv =
+            InvSqrt(d, hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)), hn::Mul(vz, vz)));
         vx = hn::Mul(vx, inv);
         vy = hn::Mul(vy, inv);
         vz = hn::Mul(vz, inv);
@@ -85,7 +83,7 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
           hz = hn::Add(lz, vz);
           const V h2 = hn::Add(hn::Add(hn::Mul(hx, hx), hn::Mul(hy, hy)), hn::Mul(hz, hz));
           const V inv = hn::IfThenElseZero(hn::Gt(h2, hn::Zero(d)),
-                                            hn::Div(hn::Set(d, 1.0f), hn::Sqrt(h2)));
+                                            InvSqrt(d, h2));
           hx = hn::Mul(hx, inv);
           hy = hn::Mul(hy, inv);
           hz = hn::Mul(hz, inv);

@@ -7,8 +7,9 @@
 #define FASTSHADE_SHADE_SPAN_LOOP_INL_H_
 #endif
 
-#include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
+
+#include "shade/fast_math-inl.h"
 
 #include "raster/triangle_in_tile.h"
 #include "shade/method.h"
@@ -26,17 +27,6 @@ HWY_INLINE V EvalPlane(D d, const Plane& p, float row, V dx) {
   return hn::Min(hn::Max(v, hn::Set(d, p.lo)), hn::Set(d, p.hi));
 }
 
-// max(c, 0)^n as exp(n log c), zero where c <= 0. The exponent is held above -103 so Exp
-// stays in range; exp(-103) is below the smallest float step anyway.
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE V SpecularPower(D d, V c, float n) {
-  const V c1 = hn::Min(c, hn::Set(d, 1.0f));
-  const auto positive = hn::Gt(c1, hn::Zero(d));
-  const V safe = hn::IfThenElse(positive, c1, hn::Set(d, 1.0f));
-  const V e = hn::Max(hn::Mul(hn::Set(d, n), hn::Log(d, safe)), hn::Set(d, -103.0f));
-  return hn::IfThenElseZero(positive, hn::Exp(d, e));
-}
-
 // clamp to [0, 1] (NaN becomes 0: x86 max returns its second operand), optional sRGB curve,
 // floor(255 v + 0.5), as quantize() in shade/lighting.h.
 template <bool kSrgb, class D, class V = hn::Vec<D>>
@@ -46,7 +36,7 @@ HWY_INLINE auto Quantize(D d, V v) {
     const V linear = hn::Mul(v, hn::Set(d, 12.92f));
     const V safe = hn::Max(v, hn::Set(d, 1e-30f));
     const V curve = hn::Sub(
-        hn::Mul(hn::Set(d, 1.055f), hn::Exp(d, hn::Mul(hn::Log(d, safe), hn::Set(d, 1.0f / 2.4f)))),
+        hn::Mul(hn::Set(d, 1.055f), FastExp2(d, hn::Mul(FastLog2(d, safe), hn::Set(d, 1.0f / 2.4f)))),
         hn::Set(d, 0.055f));
     v = hn::IfThenElse(hn::Le(v, hn::Set(d, 0.0031308f)), linear, curve);
   }
