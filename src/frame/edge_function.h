@@ -15,6 +15,7 @@ struct Edge {
   int64_t a, b, c;
   int64_t threshold;
   int64_t at(int64_t x_fx, int64_t y_fx) const { return a * x_fx + b * y_fx + c; }
+  bool covers(int64_t x_fx, int64_t y_fx) const { return at(x_fx, y_fx) >= threshold; }
 };
 
 inline constexpr int64_t pixel_centre_fx(int64_t px) {

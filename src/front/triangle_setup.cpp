@@ -9,6 +9,13 @@ namespace fastshade {
 
 namespace {
 
+bool covers_centre(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int px, int py) {
+  const int64_t x = pixel_centre_fx(px), y = pixel_centre_fx(py);
+  return make_edge(b.x_fx, b.y_fx, c.x_fx, c.y_fx).covers(x, y) &&
+         make_edge(c.x_fx, c.y_fx, a.x_fx, a.y_fx).covers(x, y) &&
+         make_edge(a.x_fx, a.y_fx, b.x_fx, b.y_fx).covers(x, y);
+}
+
 class ChunkBuilder {
  public:
   ChunkBuilder(const SetupParams& p, Chunk& chunk) : p_(p), chunk_(chunk) {}
@@ -45,6 +52,12 @@ class ChunkBuilder {
     // The rasterizer wants positive area: front faces swap their last two vertices.
     const ScreenVertex& v1 = back_facing ? b : c;
     const ScreenVertex& v2 = back_facing ? c : b;
+    // Most triangles of a dense mesh have one candidate pixel centre; test it here, so that
+    // those missing it never reach a bin.
+    if (px0 == px1 && py0 == py1 && !covers_centre(a, v1, v2, px0, py0)) {
+      ++chunk_.culled;
+      return;
+    }
     SetupTriangle& t = chunk_.triangles.emplace_back();
     t.x_fx[0] = a.x_fx, t.x_fx[1] = v1.x_fx, t.x_fx[2] = v2.x_fx;
     t.y_fx[0] = a.y_fx, t.y_fx[1] = v1.y_fx, t.y_fx[2] = v2.y_fx;
