@@ -97,37 +97,46 @@ struct EdgeBound {
 // Below this width a row is tested pixel by pixel: cheaper than stepping three bounds.
 inline constexpr int kNarrowRectPx = 16;
 
+// For a rectangle narrower than kNarrowRectPx: calls row(py, bits) for every row, bit k set
+// where pixel rect.x0 + k is covered. Branch-free per pixel; a row's bits are one run since
+// triangles are convex.
+template <typename RowFn>
+inline void for_each_row_mask(const TriangleEdges& te, const PixelRect& rect, RowFn&& row) {
+  const int width = rect.x1 - rect.x0;
+  int64_t e_row[3], step_x[3], step_y[3];
+  for (int k = 0; k < 3; ++k) {
+    e_row[k] = te.e[k].at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0));
+    step_x[k] = te.e[k].a * limits::kSubpixelOne;
+    step_y[k] = te.e[k].b * limits::kSubpixelOne;
+  }
+  for (int py = rect.y0; py <= rect.y1; ++py) {
+    uint32_t covered = 0;
+    int64_t e0 = e_row[0], e1 = e_row[1], e2 = e_row[2];
+    for (int k = 0; k <= width; ++k) {
+      covered |= uint32_t((e0 >= te.e[0].threshold) & (e1 >= te.e[1].threshold) &
+                          (e2 >= te.e[2].threshold))
+                 << k;
+      e0 += step_x[0];
+      e1 += step_x[1];
+      e2 += step_x[2];
+    }
+    row(py, covered);
+    for (int k = 0; k < 3; ++k) e_row[k] += step_y[k];
+  }
+}
+
 // Calls span(py, x_first, x_last) for every row of `rect` with covered pixels, top to bottom.
 // Exact: the same pixels as testing every centre against the three edge functions.
 template <typename SpanFn>
 inline void for_each_span(const TriangleEdges& te, const PixelRect& rect, SpanFn&& span) {
-  const int64_t width = rect.x1 - rect.x0;
-  if (width < kNarrowRectPx) {
-    // Narrow rectangles (most triangles of a dense mesh): test every pixel centre of the row,
-    // branch-free, into a bit mask; a row's coverage is one run since triangles are convex.
-    int64_t e_row[3], step_x[3], step_y[3];
-    for (int k = 0; k < 3; ++k) {
-      e_row[k] = te.e[k].at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0));
-      step_x[k] = te.e[k].a * limits::kSubpixelOne;
-      step_y[k] = te.e[k].b * limits::kSubpixelOne;
-    }
-    for (int py = rect.y0; py <= rect.y1; ++py) {
-      uint32_t covered = 0;
-      int64_t e0 = e_row[0], e1 = e_row[1], e2 = e_row[2];
-      for (int k = 0; k <= width; ++k) {
-        covered |= uint32_t((e0 >= te.e[0].threshold) & (e1 >= te.e[1].threshold) &
-                            (e2 >= te.e[2].threshold))
-                   << k;
-        e0 += step_x[0];
-        e1 += step_x[1];
-        e2 += step_x[2];
-      }
+  if (rect.x1 - rect.x0 < kNarrowRectPx) {
+    for_each_row_mask(te, rect, [&](int py, uint32_t covered) {
       if (covered)
         span(py, rect.x0 + std::countr_zero(covered), rect.x0 + 31 - std::countl_zero(covered));
-      for (int k = 0; k < 3; ++k) e_row[k] += step_y[k];
-    }
+    });
     return;
   }
+  const int64_t width = rect.x1 - rect.x0;
   detail::EdgeBound bound[3];
   for (int k = 0; k < 3; ++k) {
     const Edge& e = te.e[k];

@@ -42,15 +42,11 @@ HWY_INLINE void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget
     planes_ready = true;
   };
 
-  for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
-    ShadeSpan(tri, py, x0, x1, tt, [&](auto d, auto dx, auto) {
-      if (!planes_ready) set_up_planes();
-      const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, inv_w, row_value(inv_w, tri.bary, py), dx));
-      auto channel = [&](int c) {
-        return hn::Mul(EvalPlane(d, c_over_w[c], row_value(c_over_w[c], tri.bary, py), dx), w);
-      };
-      return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
-    });
+  ShadeTriangle(tri, tt, [&](auto d, auto dx, auto dy) {
+    if (!planes_ready) set_up_planes();
+    const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, inv_w, dx, dy));
+    auto channel = [&](int c) { return hn::Mul(EvalPlane(d, c_over_w[c], dx, dy), w); };
+    return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
   });
 }
 

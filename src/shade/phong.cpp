@@ -47,13 +47,12 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
     planes_ready = true;
   };
 
-  for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
-    ShadeSpan(tri, py, x0, x1, tt, [&](auto d, auto dx, auto) {
+  ShadeTriangle(tri, tt, [&](auto d, auto dx, auto dy) {
       using V = decltype(dx);
       if (!planes_ready) set_up_planes();
-      V nx = EvalPlane(d, planes.n[0], row_value(planes.n[0], tri.bary, py), dx);
-      V ny = EvalPlane(d, planes.n[1], row_value(planes.n[1], tri.bary, py), dx);
-      V nz = EvalPlane(d, planes.n[2], row_value(planes.n[2], tri.bary, py), dx);
+      V nx = EvalPlane(d, planes.n[0], dx, dy);
+      V ny = EvalPlane(d, planes.n[1], dx, dy);
+      V nz = EvalPlane(d, planes.n[2], dx, dy);
       const V len2 = hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz));
       const V inv_len = hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), InvSqrt(d, len2));
       nx = hn::Mul(nx, inv_len);
@@ -62,10 +61,10 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
       V vx, vy, vz;  // toward the eye (local viewer only)
       if constexpr (kLocal) {
         const V w = hn::Div(hn::Set(d, 1.0f),
-                            EvalPlane(d, planes.inv_w, row_value(planes.inv_w, tri.bary, py), dx));
-        vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], row_value(planes.p[0], tri.bary, py), dx), w));
-        vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], row_value(planes.p[1], tri.bary, py), dx), w));
-        vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], row_value(planes.p[2], tri.bary, py), dx), w));
+                            EvalPlane(d, planes.inv_w, dx, dy));
+        vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], dx, dy), w));
+        vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], dx, dy), w));
+        vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], dx, dy), w));
         const V inv =
             InvSqrt(d, hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)), hn::Mul(vz, vz)));
         vx = hn::Mul(vx, inv);
@@ -107,7 +106,6 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
                                        hn::Mul(hn::Set(d, m.ks.b), specular))));
       }
       return PackRGBA<kSrgb>(d, r, g, b);
-    });
   });
 }
 

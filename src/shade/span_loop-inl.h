@@ -7,6 +7,10 @@
 #define FASTSHADE_SHADE_SPAN_LOOP_INL_H_
 #endif
 
+#include <bit>
+#include <cmath>
+#include <cstring>
+
 #include <hwy/highway.h>
 
 #include "shade/fast_math-inl.h"
@@ -19,11 +23,13 @@ namespace fastshade {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// row + gx * dx, clamped to the plane's vertex range: the same float operations, in the same
-// order, as plane_at() in raster/planes.h.
+// (v0 + gy dy) + gx dx, clamped to the plane's vertex range: the same float operations, in
+// the same order, as row_value() then plane_at() in raster/planes.h, so a pixel gets the same
+// bits whether its row or its block was walked. dx, dy: pixel offsets from the anchor.
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V EvalPlane(D d, const Plane& p, float row, V dx) {
-  const V v = hn::Add(hn::Set(d, row), hn::Mul(hn::Set(d, p.gx), dx));
+HWY_INLINE V EvalPlane(D d, const Plane& p, V dx, V dy) {
+  const V row = hn::Add(hn::Set(d, p.v0), hn::Mul(hn::Set(d, p.gy), dy));
+  const V v = hn::Add(row, hn::Mul(hn::Set(d, p.gx), dx));
   return hn::Min(hn::Max(v, hn::Set(d, p.lo)), hn::Set(d, p.hi));
 }
 
@@ -53,46 +59,116 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
 }
 
 // Walks one covered row span a vector at a time: depth test against the tile, then
-// shade(d, dx, pass) for vectors with a lane that passes, then blended stores of colour and
-// depth. dx is the lanes' pixel offset from the triangle's anchor, as float. Short spans (the
-// many small triangles of a dense mesh) take vectors of 4 or 8 lanes: wider ones would be
-// mostly masked off and, on CPUs that split 512-bit operations, cost twice as much.
+// shade(d, dx, dy) for vectors with a lane that passes, then blended stores of colour and
+// depth. dx, dy are the lanes' pixel offsets from the triangle's anchor, as float.
 template <class D, typename ShadeFn>
-HWY_INLINE void ShadeSpanWith(D d, const TriangleInTile& tri, float depth_row, float* depth,
+HWY_INLINE void ShadeSpanWith(D d, const TriangleInTile& tri, int py, float* depth,
                               uint32_t* color, int x0, int x1, ShadeFn&& shade) {
   const hn::RebindToSigned<D> di;
   const hn::RebindToUnsigned<D> du;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const auto iota = hn::Iota(di, 0);
+  const auto dy = hn::Set(d, static_cast<float>(py - tri.bary.ay));
   for (int x = x0; x <= x1; x += lanes) {
     const auto xi = hn::Add(hn::Set(di, x), iota);
     const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, x1 + 1)));
     const auto dx = hn::ConvertTo(d, hn::Sub(xi, hn::Set(di, tri.bary.ax)));
-    const auto z = EvalPlane(d, tri.depth, depth_row, dx);
+    const auto z = EvalPlane(d, tri.depth, dx, dy);
     const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, depth + x)));
     if (hn::AllFalse(d, pass)) continue;
-    const auto rgba = shade(d, dx, pass);
+    const auto rgba = shade(d, dx, dy);
     hn::BlendedStore(z, pass, d, depth + x);
     hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, color + x);
   }
 }
 
+// Short spans (the many small triangles of a dense mesh) take vectors of 4 or 8 lanes: wider
+// ones would be mostly masked off and, on CPUs that split 512-bit operations, cost double.
 template <typename ShadeFn>
 HWY_INLINE void ShadeSpan(TriangleInTile& tri, int py, int x0, int x1, const TileTarget& tt,
                           ShadeFn&& shade) {
   tri.set_up_planes();
-  const float depth_row = row_value(tri.depth, tri.bary, py);
   float* depth = tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin;
   uint32_t* color = tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin;
   const int n = x1 - x0 + 1;
   const hn::ScalableTag<float> d;
   if (n <= 4 && hn::Lanes(d) > 4) {
-    ShadeSpanWith(hn::CappedTag<float, 4>(), tri, depth_row, depth, color, x0, x1, shade);
+    ShadeSpanWith(hn::CappedTag<float, 4>(), tri, py, depth, color, x0, x1, shade);
   } else if (n <= 8 && hn::Lanes(d) > 8) {
-    ShadeSpanWith(hn::CappedTag<float, 8>(), tri, depth_row, depth, color, x0, x1, shade);
+    ShadeSpanWith(hn::CappedTag<float, 8>(), tri, py, depth, color, x0, x1, shade);
   } else {
-    ShadeSpanWith(d, tri, depth_row, depth, color, x0, x1, shade);
+    ShadeSpanWith(d, tri, py, depth, color, x0, x1, shade);
   }
+}
+
+// Triangles at most 4 pixels wide in this tile are shaded in blocks of 4 columns by
+// lanes / 4 rows, so one vector covers what would be several nearly empty row vectors. The
+// few covered pixels move between tile and lanes one by one: cheaper here than gathers.
+inline constexpr int kBlockColumns = 4;
+
+template <typename ShadeFn>
+HWY_INLINE void ShadeBlocks(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
+  const hn::ScalableTag<float> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  const hn::RebindToUnsigned<decltype(d)> du;
+  constexpr int kMaxLanes = HWY_MAX_BYTES / sizeof(float);
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const int rows_per_block = lanes / kBlockColumns;
+  const PixelRect& r = tri.rect;
+  uint16_t row_bits[limits::kMaxTilePx];
+  for_each_row_mask(tri.edges, r, [&](int py, uint32_t bits) { row_bits[py - r.y0] = uint16_t(bits); });
+  const auto iota = hn::Iota(di, 0);
+  const auto lane_dx = hn::And(iota, hn::Set(di, kBlockColumns - 1));
+  const auto lane_dy = hn::ShiftRight<2>(iota);
+  static_assert(kBlockColumns == 4, "lane_dy shifts by log2(kBlockColumns)");
+  for (int y = r.y0; y <= r.y1; y += rows_per_block) {
+    uint32_t covered = 0;
+    for (int k = 0; k < rows_per_block && y + k <= r.y1; ++k)
+      covered |= uint32_t(row_bits[y + k - r.y0]) << (kBlockColumns * k);
+    if (!covered) continue;
+    tri.set_up_planes();
+    const auto dx = hn::ConvertTo(d, hn::Add(lane_dx, hn::Set(di, r.x0 - tri.bary.ax)));
+    const auto dy = hn::ConvertTo(d, hn::Add(lane_dy, hn::Set(di, y - tri.bary.ay)));
+    const auto z = EvalPlane(d, tri.depth, dx, dy);
+    alignas(64) float lane_depth[kMaxLanes];
+    alignas(64) float lane_z[kMaxLanes];
+    alignas(64) uint32_t lane_rgba[kMaxLanes];
+    hn::Store(hn::Set(d, -HUGE_VALF), d, lane_depth);  // uncovered lanes fail the test
+    auto pixel = [&](int lane) {
+      const int px = r.x0 + (lane & (kBlockColumns - 1)), py = y + (lane >> 2);
+      return std::size_t((py - tt.y_origin) * tt.stride + (px - tt.x_origin));
+    };
+    for (uint32_t bits = covered; bits; bits &= bits - 1) {
+      const int lane = std::countr_zero(bits);
+      lane_depth[lane] = tt.depth[pixel(lane)];
+    }
+    const auto pass = hn::Lt(z, hn::Load(d, lane_depth));
+    if (hn::AllFalse(d, pass)) continue;
+    hn::Store(z, d, lane_z);
+    hn::Store(shade(d, dx, dy), du, lane_rgba);
+    uint8_t pass_bytes[8] = {};
+    hn::StoreMaskBits(d, pass, pass_bytes);
+    uint32_t passed = 0;
+    std::memcpy(&passed, pass_bytes, sizeof(passed));
+    for (uint32_t bits = passed & ((lanes < 32) ? ((1u << lanes) - 1) : ~0u); bits; bits &= bits - 1) {
+      const int lane = std::countr_zero(bits);
+      tt.depth[pixel(lane)] = lane_z[lane];
+      tt.color[pixel(lane)] = lane_rgba[lane];
+    }
+  }
+}
+
+// Every covered pixel of the triangle in this tile: blocks for narrow triangles when vectors
+// hold at least two block rows, row spans otherwise.
+template <typename ShadeFn>
+HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
+  const hn::ScalableTag<float> d;
+  if (tri.rect.x1 - tri.rect.x0 < kBlockColumns && hn::Lanes(d) >= 2 * kBlockColumns) {
+    ShadeBlocks(tri, tt, shade);
+    return;
+  }
+  for_each_span(tri.edges, tri.rect,
+                [&](int py, int x0, int x1) { ShadeSpan(tri, py, x0, x1, tt, shade); });
 }
 
 }  // namespace HWY_NAMESPACE
