@@ -46,10 +46,12 @@ void fill_rect(Image& image, const PixelRect& r, uint32_t rgba) {
 inline void prefetch_ahead(const Frame& frame, uint32_t i, uint32_t end) {
   constexpr uint32_t kTriangleAhead = 8, kVertexAhead = 4;
   if (i + kTriangleAhead < end) __builtin_prefetch(&frame.triangle(frame.bin_entries[i + kTriangleAhead]));
-  if (i + kVertexAhead < end && !frame.attrs.empty()) {
+  if (i + kVertexAhead < end) {
     const uint32_t entry = frame.bin_entries[i + kVertexAhead];
     const SetupTriangle& t = frame.triangle(entry);
-    for (uint32_t attr : t.attr) __builtin_prefetch(&frame.vertex(entry, attr));
+    for (AttrField field : {&AttrArrays::n_view, &AttrArrays::color})
+      if (!(frame.attrs.*field).empty())
+        for (uint32_t attr : t.attr) __builtin_prefetch(&frame.vertex(entry, attr, field));
   }
 }
 

@@ -11,12 +11,24 @@
 
 namespace fastshade {
 
-// Per-vertex data the shading methods interpolate, in view space. Which fields are filled is
-// decided once per frame from the method's needs (shade/method.h).
+// Per-vertex data the shading methods interpolate, in view space, one array per quantity.
+// An array is filled only if the frame's method reads it (shade/method.h): phong with an
+// infinite viewer moves 12 bytes a vertex, not 36.
+struct AttrArrays {
+  std::vector<glm::vec3> n_view;    // unit normal
+  std::vector<glm::vec3> color;     // lit vertex colour in [0,1] (Gouraud)
+  std::vector<glm::vec3> pos_view;  // position (local viewer)
+  void clear() {
+    n_view.clear();
+    color.clear();
+    pos_view.clear();
+  }
+};
+using AttrField = std::vector<glm::vec3> AttrArrays::*;
+
+// One vertex's attributes as values: what clipping interpolates.
 struct VertexAttrs {
-  glm::vec3 n_view;    // unit normal
-  glm::vec3 color;     // lit vertex colour in [0,1] (Gouraud)
-  glm::vec3 pos_view;  // position (local viewer)
+  glm::vec3 n_view{0.0f}, color{0.0f}, pos_view{0.0f};
 };
 
 // A triangle after clipping, projection and snapping, wound so that its doubled area is
@@ -25,7 +37,7 @@ struct SetupTriangle {
   int32_t x_fx[3], y_fx[3];  // screen position, fixed point (kSubpixelBits), y down
   float depth[3];            // window depth in [0, 1]
   float inv_w[3];            // 1 / clip w, for perspective-correct attributes
-  uint32_t attr[3];          // VertexAttrs index; kClippedAttr marks the chunk's own table
+  uint32_t attr[3];          // attribute index; kClippedAttr marks the chunk's own arrays
   int16_t px_min[2], px_max[2];  // pixel-centre bounding box, inclusive, inside the image
   uint16_t material;
   uint16_t flags;            // kBackFacing
@@ -38,7 +50,8 @@ static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
 // attributes that clipping made.
 struct Chunk {
   std::vector<SetupTriangle> triangles;
-  std::vector<VertexAttrs> clipped_attrs;
+  AttrArrays clipped;  // attributes of vertices that clipping made
+  uint32_t clipped_count = 0;
   std::vector<uint32_t> tile_counts;  // per tile: how many of this chunk's triangles it holds
   long long dropped = 0, culled = 0;
 };
@@ -62,7 +75,7 @@ struct TileGrid {
 struct Frame {
   TileGrid grid;
   ShadeConstants shade;                // lights in view space, materials, background
-  std::vector<VertexAttrs> attrs;      // every object's vertices, concatenated
+  AttrArrays attrs;                    // every object's vertices, concatenated
   std::vector<Chunk> chunks;           // in draw order
   // Binning result: tile t's triangles are bin_entries[tile_begin[t] .. tile_begin[t+1]),
   // chunk by chunk and in draw order within a chunk.
@@ -72,9 +85,11 @@ struct Frame {
   const SetupTriangle& triangle(uint32_t entry) const {
     return chunks[entry >> kBinIndexBits].triangles[entry & ((1u << kBinIndexBits) - 1)];
   }
-  const VertexAttrs& vertex(uint32_t entry, uint32_t attr) const {
-    return (attr & kClippedAttr) ? chunks[entry >> kBinIndexBits].clipped_attrs[attr & ~kClippedAttr]
-                                 : attrs[attr];
+  // One attribute of one of the triangle's vertices: (frame.*field) for mesh vertices, the
+  // chunk's for vertices made by clipping.
+  const glm::vec3& vertex(uint32_t entry, uint32_t attr, AttrField field) const {
+    const AttrArrays& arrays = (attr & kClippedAttr) ? chunks[entry >> kBinIndexBits].clipped : attrs;
+    return (arrays.*field)[attr & ~kClippedAttr];
   }
 };
 

@@ -18,8 +18,13 @@ ClipPlanes guard_band_planes(float gx, float gy) {
 
 namespace {
 
-VertexAttrs attrs_of(const ClipVertex& v, const VertexAttrs* source_attrs) {
-  return v.source == kNewVertex ? v.attrs : source_attrs[v.source];
+VertexAttrs attrs_of(const ClipVertex& v, const AttrArrays& source) {
+  if (v.source == kNewVertex) return v.attrs;
+  VertexAttrs a;
+  if (!source.n_view.empty()) a.n_view = source.n_view[v.source];
+  if (!source.color.empty()) a.color = source.color[v.source];
+  if (!source.pos_view.empty()) a.pos_view = source.pos_view[v.source];
+  return a;
 }
 
 VertexAttrs lerp(const VertexAttrs& a, const VertexAttrs& b, float t) {
@@ -32,7 +37,7 @@ VertexAttrs lerp(const VertexAttrs& a, const VertexAttrs& b, float t) {
 }  // namespace
 
 int clip_polygon(ClipVertex* poly, int count, const ClipPlanes& planes, bool with_attrs,
-                 const VertexAttrs* source_attrs) {
+                 const AttrArrays& source_attrs) {
   ClipVertex scratch[kMaxClipVertices];
   ClipVertex* in = poly;
   ClipVertex* out = scratch;

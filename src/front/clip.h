@@ -29,6 +29,6 @@ ClipPlanes guard_band_planes(float gx, float gy);
 // clipped by p planes has at most 3 + p vertices.
 inline constexpr int kMaxClipVertices = 9;
 int clip_polygon(ClipVertex* poly, int count, const ClipPlanes& planes, bool with_attrs,
-                 const VertexAttrs* source_attrs);
+                 const AttrArrays& source_attrs);
 
 }  // namespace fastshade

@@ -73,7 +73,7 @@ class ChunkBuilder {
   }
 
   // Clips against near, far and the guard band, then fans the polygon (keeping its winding).
-  void emit_clipped(const ProjectedVertices& pv, const VertexAttrs* attrs, const uint32_t* idx,
+  void emit_clipped(const ProjectedVertices& pv, const AttrArrays& attrs, const uint32_t* idx,
                     uint16_t material) {
     ClipVertex poly[kMaxClipVertices];
     for (int i = 0; i < 3; ++i) {
@@ -88,8 +88,11 @@ class ChunkBuilder {
       if (poly[i].source != kNewVertex) {
         attr[i] = poly[i].source;
       } else if (p_.with_attrs) {
-        attr[i] = kClippedAttr | static_cast<uint32_t>(chunk_.clipped_attrs.size());
-        chunk_.clipped_attrs.push_back(poly[i].attrs);
+        attr[i] = kClippedAttr | static_cast<uint32_t>(chunk_.clipped_count++);
+        // Only the arrays the method reads exist (the frame's arrays say which).
+        if (!attrs.n_view.empty()) chunk_.clipped.n_view.push_back(poly[i].attrs.n_view);
+        if (!attrs.color.empty()) chunk_.clipped.color.push_back(poly[i].attrs.color);
+        if (!attrs.pos_view.empty()) chunk_.clipped.pos_view.push_back(poly[i].attrs.pos_view);
       } else {
         attr[i] = 0;  // the method reads no attributes
       }
@@ -106,10 +109,11 @@ class ChunkBuilder {
 }  // namespace
 
 void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
-                 const std::vector<VertexAttrs>& attrs, uint32_t first, uint32_t last,
+                 const AttrArrays& attrs, uint32_t first, uint32_t last,
                  const SetupParams& params, Chunk& chunk) {
   chunk.triangles.clear();
-  chunk.clipped_attrs.clear();
+  chunk.clipped.clear();
+  chunk.clipped_count = 0;
   chunk.dropped = chunk.culled = 0;
   ChunkBuilder builder(params, chunk);
   const uint8_t* flags = pv.flags.data();
@@ -129,7 +133,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
       builder.emit(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2],
                    g.triangle_material[t]);
     else
-      builder.emit_clipped(pv, attrs.empty() ? nullptr : attrs.data(), idx.data(),
+      builder.emit_clipped(pv, attrs, idx.data(),
                            g.triangle_material[t]);
   }
 }

@@ -19,7 +19,7 @@ struct SetupParams {
 
 // Triangles [first, last) of the scene into `chunk` (cleared first, capacity kept).
 void setup_chunk(const SceneGeometry& geometry, const ProjectedVertices& vertices,
-                 const std::vector<VertexAttrs>& attrs, uint32_t first, uint32_t last,
+                 const AttrArrays& attrs, uint32_t first, uint32_t last,
                  const SetupParams& params, Chunk& chunk);
 
 }  // namespace fastshade

@@ -45,9 +45,14 @@ ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool
 
 void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Viewport& vp,
                       const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
-                      std::vector<VertexAttrs>& attrs) {
-  out.resize(g.positions.size());
-  attrs.resize(needs.normal || needs.color || needs.position ? g.positions.size() : 0);
+                      AttrArrays& attrs) {
+  const std::size_t n = g.positions.size();
+  out.resize(n);
+  // Gouraud's vertex lighting reads the normal (and the position, for a local viewer) even
+  // when the method interpolates only the colour; those stay in locals.
+  attrs.n_view.resize(needs.normal ? n : 0);
+  attrs.color.resize(needs.color ? n : 0);
+  attrs.pos_view.resize(needs.position ? n : 0);
   for (const ObjectRange& o : g.objects) {
     const glm::mat4 model_view = xf.view * o.model;
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(model_view));
@@ -59,16 +64,16 @@ void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Vie
           for (uint32_t i = r.begin(); i != r.end(); ++i) {
             const glm::vec4 pos_view = model_view * glm::vec4(g.positions[i], 1.0f);
             out.store(i, proj * pos_view, vp);
-            if (attrs.empty()) continue;
-            VertexAttrs& a = attrs[i];
-            a.pos_view = glm::vec3(pos_view);
-            a.n_view = glm::normalize(normal_matrix * g.normals[i]);
+            if (!(needs.normal || needs.color || needs.position)) continue;
+            const glm::vec3 n_view = glm::normalize(normal_matrix * g.normals[i]);
+            if (needs.normal) attrs.n_view[i] = n_view;
+            if (needs.position) attrs.pos_view[i] = glm::vec3(pos_view);
             if (needs.color) {
-              const glm::vec3 v_view = shade.local_viewer ? glm::normalize(-a.pos_view)
+              const glm::vec3 v_view = shade.local_viewer ? glm::normalize(-glm::vec3(pos_view))
                                                           : glm::vec3(0, 0, 1);
-              a.color = glm::clamp(blinn_phong<float>(a.n_view, v_view, !shade.local_viewer,
-                                                      material, shade),
-                                   0.0f, 1.0f);
+              attrs.color[i] = glm::clamp(
+                  blinn_phong<float>(n_view, v_view, !shade.local_viewer, material, shade), 0.0f,
+                  1.0f);
             }
           }
         });

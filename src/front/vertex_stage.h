@@ -12,7 +12,7 @@
 
 namespace fastshade {
 
-struct AttrNeeds {  // which VertexAttrs fields a method reads (shade/method.h decides)
+struct AttrNeeds {  // which attribute arrays a method reads (shade/method.h decides)
   bool normal = false, color = false, position = false;
 };
 
@@ -44,7 +44,7 @@ struct ProjectedVertices {
 // Parallel over vertices. Outputs are resized; their capacity is reused across frames.
 void run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, const Viewport& vp,
                       const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
-                      std::vector<VertexAttrs>& attrs);
+                      AttrArrays& attrs);
 
 // Lights to view space and the infinite viewer's half vectors; materials as constants.
 ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb);

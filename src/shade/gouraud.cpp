@@ -26,13 +26,15 @@ HWY_INLINE void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget
   bool planes_ready = false;
   auto set_up_planes = [&] {
     for (int i = 0; i < 3; ++i) {
-      const VertexAttrs& v = frame.vertex(entry, t.attr[i]);
-      glm::vec3 color = v.color;
+      glm::vec3 color = frame.vertex(entry, t.attr[i], &AttrArrays::color);
       if (k.two_sided && (t.flags & kBackFacing)) {  // the vertex stage lit the front side only
-        const glm::vec3 v_view = k.local_viewer ? glm::normalize(-v.pos_view) : glm::vec3(0, 0, 1);
+        const glm::vec3 v_view =
+            k.local_viewer ? glm::normalize(-frame.vertex(entry, t.attr[i], &AttrArrays::pos_view))
+                           : glm::vec3(0, 0, 1);
+        const glm::vec3 n_view = frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
         color = glm::clamp(
-            blinn_phong<float>(-v.n_view, v_view, !k.local_viewer, k.materials[t.material], k),
-            0.0f, 1.0f);
+            blinn_phong<float>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k), 0.0f,
+            1.0f);
       }
       for (int c = 0; c < 3; ++c) vertex_color[i][c] = double(color[c]) * t.inv_w[i];
     }

@@ -32,16 +32,16 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
   PhongPlanes planes;
   bool planes_ready = false;
   auto set_up_planes = [&] {
-    const VertexAttrs* v[3] = {&frame.vertex(entry, t.attr[0]), &frame.vertex(entry, t.attr[1]),
-                               &frame.vertex(entry, t.attr[2])};
+    // Attributes over w: what varies linearly across the screen.
+    auto plane_over_w = [&](AttrField field, int c, float scale) {
+      double q[3];
+      for (int i = 0; i < 3; ++i)
+        q[i] = double(scale * frame.vertex(entry, t.attr[i], field)[c]) * t.inv_w[i];
+      return make_plane(tri.bary, q[0], q[1], q[2]);
+    };
     for (int c = 0; c < 3; ++c) {
-      planes.n[c] = make_plane(tri.bary, double(flip * v[0]->n_view[c]) * t.inv_w[0],
-                               double(flip * v[1]->n_view[c]) * t.inv_w[1],
-                               double(flip * v[2]->n_view[c]) * t.inv_w[2]);
-      if constexpr (kLocal)
-        planes.p[c] = make_plane(tri.bary, double(v[0]->pos_view[c]) * t.inv_w[0],
-                                 double(v[1]->pos_view[c]) * t.inv_w[1],
-                                 double(v[2]->pos_view[c]) * t.inv_w[2]);
+      planes.n[c] = plane_over_w(&AttrArrays::n_view, c, flip);
+      if constexpr (kLocal) planes.p[c] = plane_over_w(&AttrArrays::pos_view, c, 1.0f);
     }
     if constexpr (kLocal) planes.inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
     planes_ready = true;

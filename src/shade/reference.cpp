@@ -19,9 +19,8 @@ void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const double flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0 : 1.0;
   glm::dvec3 n_view[3], pos_view[3];
   for (int i = 0; i < 3; ++i) {
-    const VertexAttrs& v = frame.vertex(entry, t.attr[i]);
-    n_view[i] = glm::dvec3(v.n_view) * flip;
-    pos_view[i] = glm::dvec3(v.pos_view);
+    n_view[i] = glm::dvec3(frame.vertex(entry, t.attr[i], &AttrArrays::n_view)) * flip;
+    if (k.local_viewer) pos_view[i] = glm::dvec3(frame.vertex(entry, t.attr[i], &AttrArrays::pos_view));
   }
   const double inv_area = 1.0 / static_cast<double>(doubled_area(t));
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
