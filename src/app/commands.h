@@ -17,5 +17,6 @@ int run_render(const RenderCommand& cmd);
 
 int run_compare(const std::string& a, const std::string& b, bool json);
 int run_info(const std::string& mesh, bool json);
+int run_brdf_table(const std::string& isa);
 
 }  // namespace fastshade

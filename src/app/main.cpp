@@ -38,6 +38,10 @@ int main(int argc, char** argv) {
   i->add_option("mesh", mesh, "mesh file (obj, off, ply, stl)")->required();
   i->add_flag("--json", info_json, "print JSON");
 
+  std::string table_isa = "best";
+  CLI::App* b = app.add_subcommand("brdf-table", "error and cost of every BRDF approximation");
+  b->add_option("--isa", table_isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -52,6 +56,7 @@ int main(int argc, char** argv) {
     if (*r) return run_render(render);
     if (*c) return run_compare(image_a, image_b, compare_json);
     if (*i) return run_info(mesh, info_json);
+    if (*b) return run_brdf_table(table_isa);
   } catch (const InputError& e) {
     std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;

@@ -10,15 +10,16 @@
 
 #include <hwy/highway.h>
 
+#include "shade/fast_math.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // log2(x) for finite x > 0: exponent from the bits, mantissa m folded into [sqrt(1/2),
-// sqrt(2)), then t * P(t) with t = m - 1, P of degree 8 fitted (Chebyshev) for relative error
-// 2.7e-8 on that interval: below float rounding, and relative, so exact near x = 1 where
-// the specular term lives.
+// sqrt(2)), then t * P(t) with t = m - 1 (fast_math.h: relative error 2.7e-8, below float
+// rounding, and relative, so exact near x = 1 where the specular term lives).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V FastLog2(D d, V x) {
   const hn::RebindToSigned<D> di;
@@ -29,33 +30,21 @@ HWY_INLINE V FastLog2(D d, V x) {
   m = hn::IfThenElse(big, hn::Mul(m, hn::Set(d, 0.5f)), m);
   exponent = hn::Add(exponent, hn::IfThenElseZero(hn::RebindMask(di, big), hn::Set(di, 1)));
   const V t = hn::Sub(m, hn::Set(d, 1.0f));
-  V p = hn::Set(d, 0.12615002049765003f);
-  p = hn::MulAdd(p, t, hn::Set(d, -0.20742355216876388f));
-  p = hn::MulAdd(p, t, hn::Set(d, 0.21567042774283413f));
-  p = hn::MulAdd(p, t, hn::Set(d, -0.23892004117992743f));
-  p = hn::MulAdd(p, t, hn::Set(d, 0.2879182434443961f));
-  p = hn::MulAdd(p, t, hn::Set(d, -0.36070483806298315f));
-  p = hn::MulAdd(p, t, hn::Set(d, 0.48091061233376403f));
-  p = hn::MulAdd(p, t, hn::Set(d, -0.7213473332741358f));
-  p = hn::MulAdd(p, t, hn::Set(d, 1.4426950037552553f));
+  V p = hn::Set(d, fast_math::kLog2Poly[0]);
+  for (int i = 1; i < 9; ++i) p = hn::MulAdd(p, t, hn::Set(d, fast_math::kLog2Poly[i]));
   return hn::MulAdd(t, p, hn::ConvertTo(d, exponent));
 }
 
 // 2^y for y <= 0, clamped at 2^-126 (far below an 8-bit step): 2^floor(y) from the bits
-// times 2^f, f in [0, 1), by a degree-6 polynomial with relative error 2.6e-9.
+// times 2^f, f in [0, 1), by a degree-6 polynomial (fast_math.h, relative error 2.6e-9).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V FastExp2(D d, V y) {
   const hn::RebindToSigned<D> di;
-  y = hn::Max(y, hn::Set(d, -126.0f));
+  y = hn::Max(y, hn::Set(d, fast_math::kExp2Min));
   const V whole = hn::Floor(y);
   const V f = hn::Sub(y, whole);
-  V p = hn::Set(d, 0.00021877510622295198f);
-  p = hn::MulAdd(p, f, hn::Set(d, 0.001238782648402235f));
-  p = hn::MulAdd(p, f, hn::Set(d, 0.009684578963332661f));
-  p = hn::MulAdd(p, f, hn::Set(d, 0.05548042773717305f));
-  p = hn::MulAdd(p, f, hn::Set(d, 0.24023050148226868f));
-  p = hn::MulAdd(p, f, hn::Set(d, 0.6931469287822553f));
-  p = hn::MulAdd(p, f, hn::Set(d, 1.000000002583028f));
+  V p = hn::Set(d, fast_math::kExp2Poly[0]);
+  for (int i = 1; i < 7; ++i) p = hn::MulAdd(p, f, hn::Set(d, fast_math::kExp2Poly[i]));
   const auto scale = hn::ShiftLeft<23>(hn::ConvertTo(di, whole));
   return hn::BitCast(d, hn::Add(hn::BitCast(di, p), scale));
 }
