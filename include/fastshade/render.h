@@ -16,6 +16,7 @@ struct RenderOptions {
   std::string method = "phong";
   bool srgb = false;       // encode with the sRGB curve before quantising
   std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: a process-wide choice
+  std::string brdf = "exact";  // specular approximation (docs/KERNELS.md)
   std::string to_string() const;
 };
 

@@ -35,10 +35,16 @@ void validate(const RenderOptions& o) {
     throw InputError("--tile", "expected a power of two from " + std::to_string(limits::kMinTilePx) +
                                    " to " + std::to_string(limits::kMaxTilePx) + ", got " +
                                    std::to_string(o.tile_px));
-  if (!find_method(o.method)) {
+  const Method* method = find_method(o.method);
+  if (!method) {
     std::string names;
     for (const Method& m : all_methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
     throw InputError("--method", "unknown method '" + o.method + "' (expected one of: " + names + ")");
+  }
+  parse_brdf(o.brdf, "--brdf");
+  if (const std::string why = method->refuse(o); !why.empty()) {
+    const std::size_t colon = why.find(": ");  // "--option: reason"
+    throw InputError(why.substr(0, colon), why.substr(colon + 2));
   }
 }
 
@@ -97,7 +103,7 @@ struct Renderer::Impl {
         arena(o.threads > 0 ? o.threads : tbb::info::default_concurrency()) {
     select_isa(o.isa);
     frame.grid = make_grid(scene.width, scene.height, o.tile_px);
-    frame.shade = shade_constants(scene, xf, o.srgb);
+    frame.shade = shade_constants(scene, xf, o.srgb, parse_brdf(o.brdf, "--brdf"));
     needs = method->needs(frame.shade);
     draw = method->select(frame.shade);
     setup.viewport = make_viewport(scene.width, scene.height);

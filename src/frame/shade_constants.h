@@ -4,6 +4,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "shade/brdf.h"
+
 namespace fastshade {
 
 
@@ -17,6 +19,7 @@ struct MaterialConstants {
   glm::vec3 kd, ks;
   float shininess;
   double shininess_d;
+  BrdfParams lobe;  // the frame's specular approximation, fitted to this shininess
 };
 
 struct ShadeConstants {
@@ -27,6 +30,7 @@ struct ShadeConstants {
   bool local_viewer = false;
   bool two_sided = false;
   bool srgb = false;
+  BrdfChoice brdf;  // --brdf
 };
 
 }  // namespace fastshade

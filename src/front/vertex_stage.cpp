@@ -20,13 +20,15 @@ ViewTransform view_transform(const Scene& scene) {
   return xf;
 }
 
-ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb) {
+ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb,
+                              const BrdfChoice& brdf) {
   ShadeConstants k;
   k.ambient = scene.ambient;
   k.background = scene.background;
   k.local_viewer = scene.viewer == Viewer::Local;
   k.two_sided = scene.two_sided;
   k.srgb = srgb;
+  k.brdf = brdf;
   const glm::mat3 view_rot(xf.view);  // lookAt is a rigid motion: its 3x3 is a rotation
   for (const Light& light : scene.lights) {
     LightView lv;
@@ -39,7 +41,8 @@ ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool
     k.lights.push_back(lv);
   }
   for (const Material& m : scene.materials)
-    k.materials.push_back({m.diffuse, m.specular, static_cast<float>(m.shininess), m.shininess});
+    k.materials.push_back({m.diffuse, m.specular, static_cast<float>(m.shininess), m.shininess,
+                           make_brdf(brdf, m.shininess)});
   return k;
 }
 

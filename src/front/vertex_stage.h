@@ -47,6 +47,7 @@ void run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, co
                       AttrArrays& attrs);
 
 // Lights to view space and the infinite viewer's half vectors; materials as constants.
-ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb);
+ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb,
+                              const BrdfChoice& brdf = {});
 
 }  // namespace fastshade

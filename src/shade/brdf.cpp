@@ -155,7 +155,9 @@ void fit_poly_params(double n, int degree, BrdfParams& p) {
   }
 }
 
-float brdf_one(const BrdfParams& p, float c_in) {
+}  // namespace
+
+float eval_brdf_one(const BrdfParams& p, float c_in) {
   const float c = std::min(c_in, 1.0f);
   if (!(c > 0.0f)) return 0.0f;  // also NaN
   switch (p.kind) {
@@ -195,8 +197,6 @@ float brdf_one(const BrdfParams& p, float c_in) {
   }
   return 0.0f;
 }
-
-}  // namespace
 
 double cos_power(double c, double n) { return c > 0 ? std::pow(std::min(c, 1.0), n) : 0.0; }
 
@@ -281,7 +281,7 @@ BrdfParams make_brdf(const BrdfChoice& choice, double n) {
 }
 
 void eval_brdf_scalar(const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count) {
-  for (std::size_t i = 0; i < count; ++i) out[i] = brdf_one(p, n_dot_h[i]);
+  for (std::size_t i = 0; i < count; ++i) out[i] = eval_brdf_one(p, n_dot_h[i]);
 }
 
 }  // namespace fastshade

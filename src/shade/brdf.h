@@ -46,6 +46,9 @@ std::vector<std::string> brdf_names();  // one spelling each, "cosk:3" for CosK
 // millisecond; done once per material and frame).
 BrdfParams make_brdf(const BrdfChoice& choice, double n);
 
+// One value, as eval_brdf_scalar: for scalar paths (Gouraud's vertex lighting).
+float eval_brdf_one(const BrdfParams& p, float n_dot_h);
+
 // The scalar reference of the SIMD kernel (shade/brdf-inl.h): the same float operations in the
 // same order. Inputs are N.H values, any float; outputs are in [0, 1], 0 for NaN.
 void eval_brdf_scalar(const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);

@@ -49,15 +49,6 @@ HWY_INLINE V FastExp2(D d, V y) {
   return hn::BitCast(d, hn::Add(hn::BitCast(di, p), scale));
 }
 
-// max(c, 0)^n, c clamped to 1 first (rounding leaves N.H at 1 + 1e-7).
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE V SpecularPower(D d, V c, float n) {
-  const V c1 = hn::Min(c, hn::Set(d, 1.0f));
-  const auto positive = hn::Gt(c1, hn::Zero(d));
-  const V safe = hn::IfThenElse(positive, c1, hn::Set(d, 1.0f));
-  return hn::IfThenElseZero(positive, FastExp2(d, hn::Mul(hn::Set(d, n), FastLog2(d, safe))));
-}
-
 // 1/sqrt(x) for finite x > 0 without the divider: the integer-shift estimate (relative
 // error 3.4e-2) and three Newton steps y (1.5 - 0.5 x y^2), 2e-3, 5e-6, then float rounding.
 // Not the hardware estimate: its precision differs between 128-, 256- and 512-bit vectors

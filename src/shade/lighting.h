@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "frame/shade_constants.h"
+#include "shade/brdf.h"
 
 namespace fastshade {
 
@@ -35,7 +36,9 @@ inline Vec3T<T> blinn_phong(const Vec3T<T>& n_view, const Vec3T<T>& v_view, bool
     const Vec3T<T> l(light.l_view);
     const Vec3T<T> h = infinite_viewer ? Vec3T<T>(light.h_view) : glm::normalize(l + v_view);
     const T diffuse = std::max(glm::dot(n_view, l), T(0));
-    const T specular = specular_power(glm::dot(n_view, h), n);
+    // The yardstick (double) is exact; float paths use the frame's approximation (--brdf).
+    const T specular = std::is_same_v<T, double> ? specular_power(glm::dot(n_view, h), n)
+                                                 : T(eval_brdf_one(m.lobe, float(glm::dot(n_view, h))));
     c += Vec3T<T>(light.color) * (kd * diffuse + ks * specular);
   }
   return c;

@@ -11,11 +11,11 @@ namespace {
 const std::array kMethods = {
     Method{"reference",
            "per-pixel Blinn-Phong in double precision from exact barycentrics: the yardstick",
-           reference_needs, select_reference},
+           reference_needs, select_reference, reference_refuses},
     Method{"phong", "per-pixel Blinn-Phong in float with exact pow, as a GL fragment shader does",
-           phong_needs, select_phong},
+           phong_needs, select_phong, accepts_all},
     Method{"gouraud", "Blinn-Phong per vertex, colour interpolated perspective-correctly",
-           gouraud_needs, select_gouraud},
+           gouraud_needs, select_gouraud, accepts_all},
 };
 
 }  // namespace

@@ -4,8 +4,10 @@
 #pragma once
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 
+#include "fastshade/render.h"
 #include "frame/frame.h"
 #include "front/vertex_stage.h"
 #include "raster/spans.h"
@@ -32,6 +34,8 @@ struct Method {
   AttrNeeds (*needs)(const ShadeConstants& shade);
   // Chooses the variant for this frame (ISA, viewer, sRGB...): decided once, outside loops.
   DrawTriangleFn (*select)(const ShadeConstants& shade);
+  // Why these options make no sense with this method ("--brdf: ..."), or "" if they do.
+  std::string (*refuse)(const RenderOptions& options);
 };
 
 std::span<const Method> all_methods();

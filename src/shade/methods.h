@@ -6,9 +6,13 @@ namespace fastshade {
 
 AttrNeeds reference_needs(const ShadeConstants& shade);
 DrawTriangleFn select_reference(const ShadeConstants& shade);
+std::string reference_refuses(const RenderOptions& options);
 
 AttrNeeds phong_needs(const ShadeConstants& shade);
 DrawTriangleFn select_phong(const ShadeConstants& shade);
+
+// For methods that take every option.
+inline std::string accepts_all(const RenderOptions&) { return {}; }
 
 AttrNeeds gouraud_needs(const ShadeConstants& shade);
 DrawTriangleFn select_gouraud(const ShadeConstants& shade);

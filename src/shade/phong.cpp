@@ -6,6 +6,7 @@
 
 #include <hwy/highway.h>
 
+#include "shade/brdf-inl.h"
 #include "shade/methods.h"
 #include "shade/span_loop-inl.h"
 
@@ -19,8 +20,8 @@ struct PhongPlanes {
   Plane inv_w;   // (local viewer)
 };
 
-template <bool kLocal, bool kSrgb>
-HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
@@ -94,7 +95,7 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
         const V ndl = hn::Add(hn::Add(hn::Mul(nx, lx), hn::Mul(ny, ly)), hn::Mul(nz, lz));
         const V ndh = hn::Add(hn::Add(hn::Mul(nx, hx), hn::Mul(ny, hy)), hn::Mul(nz, hz));
         const V diffuse = hn::Max(ndl, hn::Zero(d));
-        const V specular = SpecularPower(d, ndh, m.shininess);
+        const V specular = Brdf<kBrdf>(d, ndh, m.lobe);
         r = hn::Add(r, hn::Mul(hn::Set(d, light.color.r),
                                hn::Add(hn::Mul(hn::Set(d, m.kd.r), diffuse),
                                        hn::Mul(hn::Set(d, m.ks.r), specular))));
@@ -109,10 +110,26 @@ HWY_INLINE void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& 
   });
 }
 
-void DrawPhongInfinite(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<false, false>(f, e, t); }
-void DrawPhongInfiniteSrgb(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<false, true>(f, e, t); }
-void DrawPhongLocal(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<true, false>(f, e, t); }
-void DrawPhongLocalSrgb(const Frame& f, uint32_t e, const TileTarget& t) { DrawPhong<true, true>(f, e, t); }
+template <bool kLocal, bool kSrgb>
+DrawTriangleFn PickBrdf(BrdfKind kind) {
+  switch (kind) {
+    case BrdfKind::Exact: return &DrawPhong<kLocal, kSrgb, BrdfKind::Exact>;
+    case BrdfKind::CosK: return &DrawPhong<kLocal, kSrgb, BrdfKind::CosK>;
+    case BrdfKind::Schlick: return &DrawPhong<kLocal, kSrgb, BrdfKind::Schlick>;
+    case BrdfKind::SchlickPow2: return &DrawPhong<kLocal, kSrgb, BrdfKind::SchlickPow2>;
+    case BrdfKind::Quadratic: return &DrawPhong<kLocal, kSrgb, BrdfKind::Quadratic>;
+    case BrdfKind::QuadraticFit: return &DrawPhong<kLocal, kSrgb, BrdfKind::QuadraticFit>;
+    case BrdfKind::Poly2: return &DrawPhong<kLocal, kSrgb, BrdfKind::Poly2>;
+    case BrdfKind::Poly3: return &DrawPhong<kLocal, kSrgb, BrdfKind::Poly3>;
+  }
+  return nullptr;
+}
+
+// This target's variant for the frame: viewer, output curve and BRDF are template flags.
+DrawTriangleFn SelectPhong(bool local, bool srgb, BrdfKind kind) {
+  if (local) return srgb ? PickBrdf<true, true>(kind) : PickBrdf<true, false>(kind);
+  return srgb ? PickBrdf<false, true>(kind) : PickBrdf<false, false>(kind);
+}
 
 }  // namespace HWY_NAMESPACE
 }  // namespace fastshade
@@ -121,20 +138,14 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace fastshade {
 
-HWY_EXPORT(DrawPhongInfinite);
-HWY_EXPORT(DrawPhongInfiniteSrgb);
-HWY_EXPORT(DrawPhongLocal);
-HWY_EXPORT(DrawPhongLocalSrgb);
+HWY_EXPORT(SelectPhong);
 
 AttrNeeds phong_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};
 }
 
 DrawTriangleFn select_phong(const ShadeConstants& shade) {
-  if (shade.local_viewer)
-    return shade.srgb ? &HWY_DYNAMIC_DISPATCH(DrawPhongLocalSrgb) : &HWY_DYNAMIC_DISPATCH(DrawPhongLocal);
-  return shade.srgb ? &HWY_DYNAMIC_DISPATCH(DrawPhongInfiniteSrgb)
-                    : &HWY_DYNAMIC_DISPATCH(DrawPhongInfinite);
+  return HWY_DYNAMIC_DISPATCH(SelectPhong)(shade.local_viewer, shade.srgb, shade.brdf.kind);
 }
 
 }  // namespace fastshade

@@ -60,4 +60,11 @@ AttrNeeds reference_needs(const ShadeConstants& shade) {
 
 DrawTriangleFn select_reference(const ShadeConstants&) { return draw_reference; }
 
+std::string reference_refuses(const RenderOptions& o) {
+  if (o.brdf != "exact")
+    return "--brdf: the reference method evaluates cos^n exactly in double; use --brdf with "
+           "phong, gouraud or hybrid";
+  return {};
+}
+
 }  // namespace fastshade
