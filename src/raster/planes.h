@@ -45,14 +45,22 @@ inline Plane make_plane(const Barycentrics& b, double q0, double q1, double q2) 
   return p;
 }
 
-// The plane's value at the start of row py, before the x term; kernels add gx * (px - ax).
-inline float row_value(const Plane& p, const Barycentrics& b, int py) {
-  return p.v0 + p.gy * static_cast<float>(py - b.ay);
+// A pixel's offsets as the kernels use them: from the anchor to its seed block's origin, from
+// the block origin to the pixel, and the row's offset.
+struct PixelOffsets {
+  float block_dx, k, dy;
+};
+inline PixelOffsets pixel_offsets(const Barycentrics& b, int px, int py) {
+  const int xb = px & ~(limits::kSeedBlockPx - 1);
+  return {static_cast<float>(xb - b.ax), static_cast<float>(px - xb), static_cast<float>(py - b.ay)};
 }
 
-// Scalar evaluation, the exact sequence of float operations the SIMD kernels perform.
-inline float plane_at(const Plane& p, float row, int dx) {
-  return std::clamp(row + p.gx * static_cast<float>(dx), p.lo, p.hi);
+// The value at a pixel: seeded from the plane at its block origin (limits::kSeedBlockPx),
+// plus k constant increments gx, clamped. The exact sequence of float operations every SIMD
+// kernel performs (no FMA), so scalar and vector paths agree bit for bit.
+inline float plane_at(const Plane& p, const PixelOffsets& o) {
+  const float seed = (p.v0 + p.gy * o.dy) + p.gx * o.block_dx;
+  return std::clamp(seed + p.gx * o.k, p.lo, p.hi);
 }
 
 }  // namespace fastshade

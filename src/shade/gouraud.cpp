@@ -44,10 +44,10 @@ HWY_INLINE void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget
     planes_ready = true;
   };
 
-  ShadeTriangle(tri, tt, [&](auto d, auto dx, auto dy) {
+  ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
     if (!planes_ready) set_up_planes();
-    const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, inv_w, dx, dy));
-    auto channel = [&](int c) { return hn::Mul(EvalPlane(d, c_over_w[c], dx, dy), w); };
+    const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, inv_w, o));
+    auto channel = [&](int c) { return hn::Mul(EvalPlane(d, c_over_w[c], o), w); };
     return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
   });
 }

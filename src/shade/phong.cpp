@@ -48,12 +48,12 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     planes_ready = true;
   };
 
-  ShadeTriangle(tri, tt, [&](auto d, auto dx, auto dy) {
-      using V = decltype(dx);
+  ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
+      using V = decltype(o.k);
       if (!planes_ready) set_up_planes();
-      V nx = EvalPlane(d, planes.n[0], dx, dy);
-      V ny = EvalPlane(d, planes.n[1], dx, dy);
-      V nz = EvalPlane(d, planes.n[2], dx, dy);
+      V nx = EvalPlane(d, planes.n[0], o);
+      V ny = EvalPlane(d, planes.n[1], o);
+      V nz = EvalPlane(d, planes.n[2], o);
       const V len2 = hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz));
       const V inv_len = hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), InvSqrt(d, len2));
       nx = hn::Mul(nx, inv_len);
@@ -62,10 +62,10 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
       V vx, vy, vz;  // toward the eye (local viewer only)
       if constexpr (kLocal) {
         const V w = hn::Div(hn::Set(d, 1.0f),
-                            EvalPlane(d, planes.inv_w, dx, dy));
-        vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], dx, dy), w));
-        vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], dx, dy), w));
-        vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], dx, dy), w));
+                            EvalPlane(d, planes.inv_w, o));
+        vx = hn::Neg(hn::Mul(EvalPlane(d, planes.p[0], o), w));
+        vy = hn::Neg(hn::Mul(EvalPlane(d, planes.p[1], o), w));
+        vz = hn::Neg(hn::Mul(EvalPlane(d, planes.p[2], o), w));
         const V inv =
             InvSqrt(d, hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)), hn::Mul(vz, vz)));
         vx = hn::Mul(vx, inv);

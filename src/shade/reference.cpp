@@ -25,11 +25,10 @@ void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const double inv_area = 1.0 / static_cast<double>(doubled_area(t));
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
     tri.set_up_planes();
-    const float depth_row = row_value(tri.depth, tri.bary, py);
     float* depth = tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin;
     uint32_t* color = tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin;
     for (int px = x0; px <= x1; ++px) {
-      const float z = plane_at(tri.depth, depth_row, px - tri.bary.ax);
+      const float z = plane_at(tri.depth, pixel_offsets(tri.bary, px, py));
       if (!(z < depth[px])) continue;
       depth[px] = z;
       double mu[3], mu_sum = 0;

@@ -23,13 +23,26 @@ namespace fastshade {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// (v0 + gy dy) + gx dx, clamped to the plane's vertex range: the same float operations, in
-// the same order, as row_value() then plane_at() in raster/planes.h, so a pixel gets the same
-// bits whether its row or its block was walked. dx, dy: pixel offsets from the anchor.
+// The lanes' pixel offsets (raster/planes.h PixelOffsets), shared by every plane of a vector.
+template <class D>
+struct LaneOffsets {
+  hn::Vec<D> block_dx, k, dy;
+};
+
+template <class D, class VI>
+HWY_INLINE LaneOffsets<D> MakeLaneOffsets(D d, const Barycentrics& b, VI px, hn::Vec<D> dy) {
+  const hn::RebindToSigned<D> di;
+  const auto xb = hn::And(px, hn::Set(di, ~(limits::kSeedBlockPx - 1)));
+  return {hn::ConvertTo(d, hn::Sub(xb, hn::Set(di, b.ax))), hn::ConvertTo(d, hn::Sub(px, xb)), dy};
+}
+
+// plane_at() in raster/planes.h, lane by lane: the same float operations in the same order,
+// so a pixel gets the same bits whether its row or its block was walked, at any width.
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V EvalPlane(D d, const Plane& p, V dx, V dy) {
-  const V row = hn::Add(hn::Set(d, p.v0), hn::Mul(hn::Set(d, p.gy), dy));
-  const V v = hn::Add(row, hn::Mul(hn::Set(d, p.gx), dx));
+HWY_INLINE V EvalPlane(D d, const Plane& p, const LaneOffsets<D>& o) {
+  const V gx = hn::Set(d, p.gx);
+  const V seed = hn::Add(hn::Add(hn::Set(d, p.v0), hn::Mul(hn::Set(d, p.gy), o.dy)), hn::Mul(gx, o.block_dx));
+  const V v = hn::Add(seed, hn::Mul(gx, o.k));
   return hn::Min(hn::Max(v, hn::Set(d, p.lo)), hn::Set(d, p.hi));
 }
 
@@ -59,8 +72,8 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
 }
 
 // Walks one covered row span a vector at a time: depth test against the tile, then
-// shade(d, dx, dy) for vectors with a lane that passes, then blended stores of colour and
-// depth. dx, dy are the lanes' pixel offsets from the triangle's anchor, as float.
+// shade(d, offsets) for vectors with a lane that passes, then blended stores of colour and
+// depth.
 template <class D, typename ShadeFn>
 HWY_INLINE void ShadeSpanWith(D d, const TriangleInTile& tri, int py, float* depth,
                               uint32_t* color, int x0, int x1, ShadeFn&& shade) {
@@ -72,11 +85,11 @@ HWY_INLINE void ShadeSpanWith(D d, const TriangleInTile& tri, int py, float* dep
   for (int x = x0; x <= x1; x += lanes) {
     const auto xi = hn::Add(hn::Set(di, x), iota);
     const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, x1 + 1)));
-    const auto dx = hn::ConvertTo(d, hn::Sub(xi, hn::Set(di, tri.bary.ax)));
-    const auto z = EvalPlane(d, tri.depth, dx, dy);
+    const auto o = MakeLaneOffsets(d, tri.bary, xi, dy);
+    const auto z = EvalPlane(d, tri.depth, o);
     const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, depth + x)));
     if (hn::AllFalse(d, pass)) continue;
-    const auto rgba = shade(d, dx, dy);
+    const auto rgba = shade(d, o);
     hn::BlendedStore(z, pass, d, depth + x);
     hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, color + x);
   }
@@ -127,9 +140,10 @@ HWY_INLINE void ShadeBlocks(TriangleInTile& tri, const TileTarget& tt, ShadeFn&&
       covered |= uint32_t(row_bits[y + k - r.y0]) << (kBlockColumns * k);
     if (!covered) continue;
     tri.set_up_planes();
-    const auto dx = hn::ConvertTo(d, hn::Add(lane_dx, hn::Set(di, r.x0 - tri.bary.ax)));
+    const auto px = hn::Add(lane_dx, hn::Set(di, r.x0));
     const auto dy = hn::ConvertTo(d, hn::Add(lane_dy, hn::Set(di, y - tri.bary.ay)));
-    const auto z = EvalPlane(d, tri.depth, dx, dy);
+    const auto o = MakeLaneOffsets(d, tri.bary, px, dy);
+    const auto z = EvalPlane(d, tri.depth, o);
     alignas(64) float lane_depth[kMaxLanes];
     alignas(64) float lane_z[kMaxLanes];
     alignas(64) uint32_t lane_rgba[kMaxLanes];
@@ -145,7 +159,7 @@ HWY_INLINE void ShadeBlocks(TriangleInTile& tri, const TileTarget& tt, ShadeFn&&
     const auto pass = hn::Lt(z, hn::Load(d, lane_depth));
     if (hn::AllFalse(d, pass)) continue;
     hn::Store(z, d, lane_z);
-    hn::Store(shade(d, dx, dy), du, lane_rgba);
+    hn::Store(shade(d, o), du, lane_rgba);
     uint8_t pass_bytes[8] = {};
     hn::StoreMaskBits(d, pass, pass_bytes);
     uint32_t passed = 0;
