@@ -1,5 +1,6 @@
 // `gouraud`: Blinn-Phong at the vertices (front/vertex_stage.cpp), the colour interpolated
-// perspective-correctly per pixel: (c/w) / (1/w) from four planes.
+// perspective-correctly per pixel: (c/w) / (1/w) from four planes stepped by constant
+// increments inside each 16-pixel block (the paper's eq. 1-2, raster/planes.h).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shade/gouraud.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -14,17 +15,25 @@ HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
 
+template <bool kSrgb, class D>
+HWY_INLINE auto GouraudShade(D d, const GouraudSpanInput& in, const LaneOffsets<D>& o) {
+  const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, in.inv_w, o));
+  return PackRGBA<kSrgb>(d, hn::Mul(EvalPlane(d, in.c_over_w[0], o), w),
+                         hn::Mul(EvalPlane(d, in.c_over_w[1], o), w),
+                         hn::Mul(EvalPlane(d, in.c_over_w[2], o), w));
+}
+
 template <bool kSrgb>
-HWY_INLINE void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
   const ShadeConstants& k = frame.shade;
-  double vertex_color[3][3];  // colour / w
-  // Planes are set up on the first vector that passes the depth test (see phong.cpp).
-  Plane c_over_w[3], inv_w;
-  bool planes_ready = false;
-  auto set_up_planes = [&] {
+  // Colour planes are set up on the first vector that passes the depth test (see phong.cpp).
+  GouraudSpanInput in;
+  bool ready = false;
+  auto set_up = [&] {
+    double c_over_w[3][3];
     for (int i = 0; i < 3; ++i) {
       glm::vec3 color = frame.vertex(entry, t.attr[i], &AttrArrays::color);
       if (k.two_sided && (t.flags & kBackFacing)) {  // the vertex stage lit the front side only
@@ -36,24 +45,27 @@ HWY_INLINE void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget
             blinn_phong<float>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k), 0.0f,
             1.0f);
       }
-      for (int c = 0; c < 3; ++c) vertex_color[i][c] = double(color[c]) * t.inv_w[i];
+      for (int c = 0; c < 3; ++c) c_over_w[i][c] = double(color[c]) * t.inv_w[i];
     }
     for (int c = 0; c < 3; ++c)
-      c_over_w[c] = make_plane(tri.bary, vertex_color[0][c], vertex_color[1][c], vertex_color[2][c]);
-    inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
-    planes_ready = true;
+      in.c_over_w[c] = make_plane(tri.bary, c_over_w[0][c], c_over_w[1][c], c_over_w[2][c]);
+    in.inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+    ready = true;
   };
-
   ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
-    if (!planes_ready) set_up_planes();
-    const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, inv_w, o));
-    auto channel = [&](int c) { return hn::Mul(EvalPlane(d, c_over_w[c], o), w); };
-    return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
+    if (!ready) set_up();
+    return GouraudShade<kSrgb>(d, in, o);
   });
 }
 
-void DrawGouraudLinear(const Frame& f, uint32_t e, const TileTarget& t) { DrawGouraud<false>(f, e, t); }
-void DrawGouraudSrgb(const Frame& f, uint32_t e, const TileTarget& t) { DrawGouraud<true>(f, e, t); }
+DrawTriangleFn SelectGouraud(bool srgb) { return srgb ? &DrawGouraud<true> : &DrawGouraud<false>; }
+
+void GouraudSpan(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row) {
+  if (srgb)
+    ShadeSpan(in.bary, in.depth, py, x0, x1, row, [&](auto d, const auto& o) { return GouraudShade<true>(d, in, o); });
+  else
+    ShadeSpan(in.bary, in.depth, py, x0, x1, row, [&](auto d, const auto& o) { return GouraudShade<false>(d, in, o); });
+}
 
 }  // namespace HWY_NAMESPACE
 }  // namespace fastshade
@@ -62,8 +74,8 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace fastshade {
 
-HWY_EXPORT(DrawGouraudLinear);
-HWY_EXPORT(DrawGouraudSrgb);
+HWY_EXPORT(SelectGouraud);
+HWY_EXPORT(GouraudSpan);
 
 AttrNeeds gouraud_needs(const ShadeConstants& shade) {
   // Two-sided lighting relights back faces from their normals at setup.
@@ -71,7 +83,11 @@ AttrNeeds gouraud_needs(const ShadeConstants& shade) {
 }
 
 DrawTriangleFn select_gouraud(const ShadeConstants& shade) {
-  return shade.srgb ? &HWY_DYNAMIC_DISPATCH(DrawGouraudSrgb) : &HWY_DYNAMIC_DISPATCH(DrawGouraudLinear);
+  return HWY_DYNAMIC_DISPATCH(SelectGouraud)(shade.srgb);
+}
+
+void gouraud_span(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row) {
+  HWY_DYNAMIC_DISPATCH(GouraudSpan)(in, srgb, py, x0, x1, row);
 }
 
 }  // namespace fastshade

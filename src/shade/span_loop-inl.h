@@ -17,6 +17,7 @@
 
 #include "raster/triangle_in_tile.h"
 #include "shade/method.h"
+#include "shade/span_kernels.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
@@ -75,43 +76,46 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
 // shade(d, offsets) for vectors with a lane that passes, then blended stores of colour and
 // depth.
 template <class D, typename ShadeFn>
-HWY_INLINE void ShadeSpanWith(D d, const TriangleInTile& tri, int py, float* depth,
-                              uint32_t* color, int x0, int x1, ShadeFn&& shade) {
+HWY_INLINE void ShadeSpanWith(D d, const Barycentrics& bary, const Plane& depth_plane, int py,
+                              int x0, int x1, RowTarget row, ShadeFn&& shade) {
   const hn::RebindToSigned<D> di;
   const hn::RebindToUnsigned<D> du;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const auto iota = hn::Iota(di, 0);
-  const auto dy = hn::Set(d, static_cast<float>(py - tri.bary.ay));
+  const auto dy = hn::Set(d, static_cast<float>(py - bary.ay));
   for (int x = x0; x <= x1; x += lanes) {
     const auto xi = hn::Add(hn::Set(di, x), iota);
     const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, x1 + 1)));
-    const auto o = MakeLaneOffsets(d, tri.bary, xi, dy);
-    const auto z = EvalPlane(d, tri.depth, o);
-    const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, depth + x)));
+    const auto o = MakeLaneOffsets(d, bary, xi, dy);
+    const auto z = EvalPlane(d, depth_plane, o);
+    const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
     if (hn::AllFalse(d, pass)) continue;
     const auto rgba = shade(d, o);
-    hn::BlendedStore(z, pass, d, depth + x);
-    hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, color + x);
+    hn::BlendedStore(z, pass, d, row.depth + x);
+    hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
   }
 }
 
 // Short spans (the many small triangles of a dense mesh) take vectors of 4 or 8 lanes: wider
 // ones would be mostly masked off and, on CPUs that split 512-bit operations, cost double.
+// The rows must have kScratchPadPx of slack past x1 (a vector may read and blend past it).
 template <typename ShadeFn>
-HWY_INLINE void ShadeSpan(TriangleInTile& tri, int py, int x0, int x1, const TileTarget& tt,
-                          ShadeFn&& shade) {
-  tri.set_up_planes();
-  float* depth = tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin;
-  uint32_t* color = tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin;
+HWY_INLINE void ShadeSpan(const Barycentrics& bary, const Plane& depth_plane, int py, int x0,
+                          int x1, RowTarget row, ShadeFn&& shade) {
   const int n = x1 - x0 + 1;
   const hn::ScalableTag<float> d;
   if (n <= 4 && hn::Lanes(d) > 4) {
-    ShadeSpanWith(hn::CappedTag<float, 4>(), tri, py, depth, color, x0, x1, shade);
+    ShadeSpanWith(hn::CappedTag<float, 4>(), bary, depth_plane, py, x0, x1, row, shade);
   } else if (n <= 8 && hn::Lanes(d) > 8) {
-    ShadeSpanWith(hn::CappedTag<float, 8>(), tri, py, depth, color, x0, x1, shade);
+    ShadeSpanWith(hn::CappedTag<float, 8>(), bary, depth_plane, py, x0, x1, row, shade);
   } else {
-    ShadeSpanWith(d, tri, py, depth, color, x0, x1, shade);
+    ShadeSpanWith(d, bary, depth_plane, py, x0, x1, row, shade);
   }
+}
+
+inline RowTarget tile_row(const TileTarget& tt, int py) {
+  return {tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin,
+          tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin};
 }
 
 // Triangles at most 4 pixels wide in this tile are shaded in blocks of 4 columns by
@@ -181,8 +185,10 @@ HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn
     ShadeBlocks(tri, tt, shade);
     return;
   }
-  for_each_span(tri.edges, tri.rect,
-                [&](int py, int x0, int x1) { ShadeSpan(tri, py, x0, x1, tt, shade); });
+  for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
+    tri.set_up_planes();
+    ShadeSpan(tri.bary, tri.depth, py, x0, x1, tile_row(tt, py), shade);
+  });
 }
 
 }  // namespace HWY_NAMESPACE

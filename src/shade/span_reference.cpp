@@ -1,0 +1,83 @@
+// Scalar references of the span kernels (shade/span_kernels.h).
+#include <algorithm>
+#include <cmath>
+
+#include "shade/brdf.h"
+#include "shade/fast_math.h"
+#include "shade/method.h"
+#include "shade/span_kernels.h"
+
+namespace fastshade {
+
+uint8_t quantize_like_simd(float v, bool srgb) {
+  v = std::min(std::max(v, 0.0f), 1.0f);  // NaN becomes 0, as x86 max(NaN, 0)
+  if (!(v == v)) v = 0.0f;
+  if (srgb && !(v <= 0.0031308f))
+    v = 1.055f * fast_math::exp2(fast_math::log2(std::max(v, 1e-30f)) * (1.0f / 2.4f)) - 0.055f;
+  else if (srgb)
+    v = v * 12.92f;
+  return static_cast<uint8_t>(static_cast<int32_t>(std::floor(v * 255.0f + 0.5f)));
+}
+
+namespace {
+
+// Depth test and write for one pixel; true if it passes.
+bool depth_pass(const Plane& depth_plane, const PixelOffsets& o, float& depth) {
+  const float z = plane_at(depth_plane, o);
+  if (!(z < depth)) return false;
+  depth = z;
+  return true;
+}
+
+}  // namespace
+
+void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1,
+                         RowTarget row) {
+  for (int px = x0; px <= x1; ++px) {
+    const PixelOffsets o = pixel_offsets(in.bary, px, py);
+    if (!depth_pass(in.depth, o, row.depth[px])) continue;
+    const float w = 1.0f / plane_at(in.inv_w, o);
+    uint8_t c[3];
+    for (int i = 0; i < 3; ++i) c[i] = quantize_like_simd(plane_at(in.c_over_w[i], o) * w, srgb);
+    row.color[px] = pack_rgba(c[0], c[1], c[2]);
+  }
+}
+
+void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
+  const MaterialConstants& m = *in.material;
+  const ShadeConstants& k = *in.shade;
+  for (int px = x0; px <= x1; ++px) {
+    const PixelOffsets o = pixel_offsets(in.bary, px, py);
+    if (!depth_pass(in.depth, o, row.depth[px])) continue;
+    float nx = plane_at(in.n[0], o), ny = plane_at(in.n[1], o), nz = plane_at(in.n[2], o);
+    const float len2 = (nx * nx + ny * ny) + nz * nz;
+    const float inv_len = len2 > 0.0f ? fast_math::inv_sqrt(len2) : 0.0f;
+    nx *= inv_len, ny *= inv_len, nz *= inv_len;
+    float vx = 0, vy = 0, vz = 0;  // toward the eye (local viewer)
+    if (k.local_viewer) {
+      const float w = 1.0f / plane_at(in.inv_w, o);
+      vx = -(plane_at(in.p[0], o) * w), vy = -(plane_at(in.p[1], o) * w), vz = -(plane_at(in.p[2], o) * w);
+      const float inv = fast_math::inv_sqrt((vx * vx + vy * vy) + vz * vz);
+      vx *= inv, vy *= inv, vz *= inv;
+    }
+    float rgb[3] = {k.ambient.r, k.ambient.g, k.ambient.b};
+    for (const LightView& light : k.lights) {
+      float hx = light.h_view.x, hy = light.h_view.y, hz = light.h_view.z;
+      if (k.local_viewer) {
+        hx = light.l_view.x + vx, hy = light.l_view.y + vy, hz = light.l_view.z + vz;
+        const float h2 = (hx * hx + hy * hy) + hz * hz;
+        const float inv = h2 > 0.0f ? fast_math::inv_sqrt(h2) : 0.0f;
+        hx *= inv, hy *= inv, hz *= inv;
+      }
+      const float ndl = (nx * light.l_view.x + ny * light.l_view.y) + nz * light.l_view.z;
+      const float ndh = (nx * hx + ny * hy) + nz * hz;
+      const float diffuse = std::max(ndl, 0.0f);
+      const float specular = eval_brdf_one(m.lobe, ndh);
+      for (int c = 0; c < 3; ++c) rgb[c] = rgb[c] + light.color[c] * (m.kd[c] * diffuse + m.ks[c] * specular);
+    }
+    row.color[px] = pack_rgba(quantize_like_simd(rgb[0], k.srgb), quantize_like_simd(rgb[1], k.srgb),
+                              quantize_like_simd(rgb[2], k.srgb));
+  }
+}
+
+}  // namespace fastshade
