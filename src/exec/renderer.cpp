@@ -16,6 +16,7 @@
 #include "front/scene_geometry.h"
 #include "front/triangle_setup.h"
 #include "front/vertex_stage.h"
+#include "shade/hybrid.h"
 #include "shade/method.h"
 
 namespace fastshade {
@@ -42,6 +43,8 @@ void validate(const RenderOptions& o) {
     throw InputError("--method", "unknown method '" + o.method + "' (expected one of: " + names + ")");
   }
   parse_brdf(o.brdf, "--brdf");
+  if (!(o.max_error >= 0 && o.max_error <= 255))
+    throw InputError("--max-error", "expected 0 to 255 (8-bit steps), got " + std::to_string(o.max_error));
   if (const std::string why = method->refuse(o); !why.empty()) {
     const std::size_t colon = why.find(": ");  // "--option: reason"
     throw InputError(why.substr(0, colon), why.substr(colon + 2));
@@ -104,6 +107,7 @@ struct Renderer::Impl {
     select_isa(o.isa);
     frame.grid = make_grid(scene.width, scene.height, o.tile_px);
     frame.shade = shade_constants(scene, xf, o.srgb, parse_brdf(o.brdf, "--brdf"));
+    frame.shade.hybrid_tolerance = hybrid_tolerance(o.max_error);
     needs = method->needs(frame.shade);
     draw = method->select(frame.shade);
     setup.viewport = make_viewport(scene.width, scene.height);

@@ -31,6 +31,7 @@ struct ShadeConstants {
   bool two_sided = false;
   bool srgb = false;
   BrdfChoice brdf;  // --brdf
+  float hybrid_tolerance = 0;  // hybrid: interpolation error allowed, colour units (--max-error)
 };
 
 }  // namespace fastshade

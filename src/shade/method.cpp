@@ -14,6 +14,10 @@ const std::array kMethods = {
            reference_needs, select_reference, reference_refuses},
     Method{"phong", "per-pixel Blinn-Phong in float with exact pow, as a GL fragment shader does",
            phong_needs, select_phong, accepts_all},
+    Method{"hybrid",
+           "Phong at the ends of 2^m-pixel segments, linear between, m adapted per 16-px block "
+           "to --max-error",
+           phong_needs, select_hybrid, accepts_all},
     Method{"gouraud", "Blinn-Phong per vertex, colour interpolated perspective-correctly",
            gouraud_needs, select_gouraud, accepts_all},
 };

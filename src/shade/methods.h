@@ -17,4 +17,6 @@ inline std::string accepts_all(const RenderOptions&) { return {}; }
 AttrNeeds gouraud_needs(const ShadeConstants& shade);
 DrawTriangleFn select_gouraud(const ShadeConstants& shade);
 
+DrawTriangleFn select_hybrid(const ShadeConstants& shade);
+
 }  // namespace fastshade

@@ -32,13 +32,27 @@ struct PhongSpanInput {
   const ShadeConstants* shade;  // lights, ambient, viewer, sRGB
 };
 
+// Phong's colour at one pixel before quantisation (the scalar twin of PhongColor in phong-inl).
+struct PhongColor {
+  float c[3];
+};
+PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o);
+
 // Scalar references: per pixel, the same float operations as the SIMD kernels.
 void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
 void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
+// tol: the interpolation error allowed, in [0, 1] colour units; [xl, xr] the row's whole
+// covered run in the triangle, [x0, x1] the part to shade (shade/hybrid.h).
+struct HybridRun {
+  float tol;
+  int xl, xr;
+};
+void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
 
 // The SIMD kernels on the process's ISA (exec/isa.h), for tests and benchmarks.
 void gouraud_span(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
 void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
+void hybrid_span(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
 
 // quantize() (shade/lighting.h) as the SIMD kernels compute it: the same float operations,
 // with the kernels' exp2/log2 for the sRGB curve.

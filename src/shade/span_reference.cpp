@@ -5,6 +5,7 @@
 #include "shade/brdf.h"
 #include "shade/fast_math.h"
 #include "shade/method.h"
+#include "shade/hybrid.h"
 #include "shade/span_kernels.h"
 
 namespace fastshade {
@@ -43,40 +44,77 @@ void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, 
   }
 }
 
-void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
+PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o) {
   const MaterialConstants& m = *in.material;
   const ShadeConstants& k = *in.shade;
+  float nx = plane_at(in.n[0], o), ny = plane_at(in.n[1], o), nz = plane_at(in.n[2], o);
+  const float len2 = (nx * nx + ny * ny) + nz * nz;
+  const float inv_len = len2 > 0.0f ? fast_math::inv_sqrt(len2) : 0.0f;
+  nx *= inv_len, ny *= inv_len, nz *= inv_len;
+  float vx = 0, vy = 0, vz = 0;  // toward the eye (local viewer)
+  if (k.local_viewer) {
+    const float w = 1.0f / plane_at(in.inv_w, o);
+    vx = -(plane_at(in.p[0], o) * w), vy = -(plane_at(in.p[1], o) * w), vz = -(plane_at(in.p[2], o) * w);
+    const float v2 = (vx * vx + vy * vy) + vz * vz;
+    const float inv = v2 > 0.0f ? fast_math::inv_sqrt(v2) : 0.0f;
+    vx *= inv, vy *= inv, vz *= inv;
+  }
+  PhongColor rgb{{k.ambient.r, k.ambient.g, k.ambient.b}};
+  for (const LightView& light : k.lights) {
+    float hx = light.h_view.x, hy = light.h_view.y, hz = light.h_view.z;
+    if (k.local_viewer) {
+      hx = light.l_view.x + vx, hy = light.l_view.y + vy, hz = light.l_view.z + vz;
+      const float h2 = (hx * hx + hy * hy) + hz * hz;
+      const float inv = h2 > 0.0f ? fast_math::inv_sqrt(h2) : 0.0f;
+      hx *= inv, hy *= inv, hz *= inv;
+    }
+    const float ndl = (nx * light.l_view.x + ny * light.l_view.y) + nz * light.l_view.z;
+    const float ndh = (nx * hx + ny * hy) + nz * hz;
+    const float diffuse = std::max(ndl, 0.0f);
+    const float specular = eval_brdf_one(m.lobe, ndh);
+    for (int c = 0; c < 3; ++c)
+      rgb.c[c] = rgb.c[c] + light.color[c] * (m.kd[c] * diffuse + m.ks[c] * specular);
+  }
+  return rgb;
+}
+
+void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
+  const bool srgb = in.shade->srgb;
   for (int px = x0; px <= x1; ++px) {
     const PixelOffsets o = pixel_offsets(in.bary, px, py);
     if (!depth_pass(in.depth, o, row.depth[px])) continue;
-    float nx = plane_at(in.n[0], o), ny = plane_at(in.n[1], o), nz = plane_at(in.n[2], o);
-    const float len2 = (nx * nx + ny * ny) + nz * nz;
-    const float inv_len = len2 > 0.0f ? fast_math::inv_sqrt(len2) : 0.0f;
-    nx *= inv_len, ny *= inv_len, nz *= inv_len;
-    float vx = 0, vy = 0, vz = 0;  // toward the eye (local viewer)
-    if (k.local_viewer) {
-      const float w = 1.0f / plane_at(in.inv_w, o);
-      vx = -(plane_at(in.p[0], o) * w), vy = -(plane_at(in.p[1], o) * w), vz = -(plane_at(in.p[2], o) * w);
-      const float inv = fast_math::inv_sqrt((vx * vx + vy * vy) + vz * vz);
-      vx *= inv, vy *= inv, vz *= inv;
-    }
-    float rgb[3] = {k.ambient.r, k.ambient.g, k.ambient.b};
-    for (const LightView& light : k.lights) {
-      float hx = light.h_view.x, hy = light.h_view.y, hz = light.h_view.z;
-      if (k.local_viewer) {
-        hx = light.l_view.x + vx, hy = light.l_view.y + vy, hz = light.l_view.z + vz;
-        const float h2 = (hx * hx + hy * hy) + hz * hz;
-        const float inv = h2 > 0.0f ? fast_math::inv_sqrt(h2) : 0.0f;
-        hx *= inv, hy *= inv, hz *= inv;
+    const PhongColor rgb = phong_color_scalar(in, o);
+    row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
+                              quantize_like_simd(rgb.c[2], srgb));
+  }
+}
+
+void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,
+                        RowTarget row) {
+  const bool srgb = in.shade->srgb;
+  const int block = limits::kSeedBlockPx;
+  for (int xb = x0 & ~(block - 1); xb <= x1; xb += block) {
+    const int step = hybrid_step(in, xb, py, run.xl, run.xr, run.tol);
+    PhongColor ends[limits::kSeedBlockPx + 1];
+    if (step > 1)
+      for (int j = 0; j * step <= block; ++j)
+        ends[j] = phong_color_scalar(in, pixel_offsets(in.bary, segment_end(xb, j, step, run.xl, run.xr), py));
+    for (int px = std::max(xb, x0); px <= std::min(xb + block - 1, x1); ++px) {
+      const PixelOffsets o = pixel_offsets(in.bary, px, py);
+      if (!depth_pass(in.depth, o, row.depth[px])) continue;
+      PhongColor rgb;
+      if (step == 1) {
+        rgb = phong_color_scalar(in, o);
+      } else {
+        const int j = (px - xb) / step;
+        const int ea = segment_end(xb, j, step, run.xl, run.xr), eb = segment_end(xb, j + 1, step, run.xl, run.xr);
+        const float t = eb > ea ? static_cast<float>(px - ea) / static_cast<float>(eb - ea) : 0.0f;
+        for (int ch = 0; ch < 3; ++ch)
+          rgb.c[ch] = ends[j].c[ch] + t * (ends[j + 1].c[ch] - ends[j].c[ch]);
       }
-      const float ndl = (nx * light.l_view.x + ny * light.l_view.y) + nz * light.l_view.z;
-      const float ndh = (nx * hx + ny * hy) + nz * hz;
-      const float diffuse = std::max(ndl, 0.0f);
-      const float specular = eval_brdf_one(m.lobe, ndh);
-      for (int c = 0; c < 3; ++c) rgb[c] = rgb[c] + light.color[c] * (m.kd[c] * diffuse + m.ks[c] * specular);
+      row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
+                                quantize_like_simd(rgb.c[2], srgb));
     }
-    row.color[px] = pack_rgba(quantize_like_simd(rgb[0], k.srgb), quantize_like_simd(rgb[1], k.srgb),
-                              quantize_like_simd(rgb[2], k.srgb));
   }
 }
 

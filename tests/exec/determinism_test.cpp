@@ -37,7 +37,7 @@ TEST(Determinism, SceneFilesAreByteIdenticalForAnyThreadsAndTiles) {
   int count = 0;
   for (const char* file : {"default.json", "spheres.json", "torus_local.json"}) {
     const Scene scene = load_scene(scenes / file);
-    for (const char* method : {"phong", "gouraud", "reference"})
+    for (const char* method : {"phong", "gouraud", "hybrid", "reference"})
       expect_identical_across_threads_and_tiles(scene, method, file);
     ++count;
   }

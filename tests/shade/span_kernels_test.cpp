@@ -10,6 +10,7 @@
 #include "exec/isa.h"
 #include "frame/edge_function.h"
 #include "shade/brdf.h"
+#include "shade/hybrid.h"
 #include "shade/span_kernels.h"
 
 namespace fastshade {
@@ -140,6 +141,36 @@ TEST_F(SpanKernels, PhongMatchesScalarReferenceOnEveryIsaBrdfAndViewer) {
                     [&](RowTarget r, int x0, int x1) { phong_span_scalar(in, 100, x0, x1, r); });
       }
   }
+}
+
+TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsa) {
+  std::mt19937 rng(13);
+  ShadeConstants k;
+  k.ambient = glm::vec3(0.05f);
+  k.lights.push_back({glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0), glm::vec3(1.0f)});
+  k.lights[0].h_view = glm::normalize(k.lights[0].l_view + glm::vec3(0, 0, 1));
+  int segmented = 0;
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    for (double n : {10.0, 100.0, 1000.0})
+      for (float tol_lsb : {0.5f, 1.0f, 4.0f}) {
+        MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), float(n), n, make_brdf(BrdfChoice{}, n)};
+        const Fixture f = random_triangle(rng);
+        PhongSpanInput in;
+        in.bary = f.bary;
+        in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
+        for (int c = 0; c < 3; ++c)  // gently curved: segments longer than a pixel happen
+          in.n[c] = random_plane(f, rng, c == 2 ? 0.9f : -0.1f, c == 2 ? 1.0f : 0.1f);
+        in.material = &m;
+        in.shade = &k;
+        const HybridRun run{hybrid_tolerance(tol_lsb), 145, 190};
+        for (int xb = 144; xb < 190; xb += 16) segmented += hybrid_step(in, xb, 100, run.xl, run.xr, run.tol) > 1;
+        expect_same("hybrid " + isa, rng, 1,
+                    [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
+                    [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
+      }
+  }
+  EXPECT_GT(segmented, 0) << "no block was ever interpolated: the test shows nothing";
 }
 
 }  // namespace

@@ -1,0 +1,113 @@
+// Phong's per-pixel colour as SIMD (per-target, Highway "-inl.h"), shared by the phong and
+// hybrid kernels.
+#if defined(FASTSHADE_SHADE_PHONG_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FASTSHADE_SHADE_PHONG_INL_H_
+#undef FASTSHADE_SHADE_PHONG_INL_H_
+#else
+#define FASTSHADE_SHADE_PHONG_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "shade/brdf-inl.h"
+#include "shade/span_loop-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace fastshade {
+namespace HWY_NAMESPACE {
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V Dot(V ax, V ay, V az, V bx, V by, V bz) {
+  return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
+}
+
+// Scales (x, y, z) to unit length; a zero vector stays zero.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void Normalize(D d, V& x, V& y, V& z) {
+  const V len2 = Dot<D>(x, y, z, x, y, z);
+  const V inv = hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), InvSqrt(d, len2));
+  x = hn::Mul(x, inv);
+  y = hn::Mul(y, inv);
+  z = hn::Mul(z, inv);
+}
+
+template <class D>
+struct ColorVecs {
+  hn::Vec<D> r, g, b;
+};
+
+// Blinn-Phong at the lanes' pixels before quantisation; phong_color_scalar() is its twin.
+template <bool kLocal, BrdfKind kBrdf, class D>
+HWY_INLINE ColorVecs<D> PhongColor(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
+  using V = hn::Vec<D>;
+  const MaterialConstants& m = *in.material;
+  const ShadeConstants& k = *in.shade;
+  V nx = EvalPlane(d, in.n[0], o), ny = EvalPlane(d, in.n[1], o), nz = EvalPlane(d, in.n[2], o);
+  Normalize(d, nx, ny, nz);
+  V vx, vy, vz;  // toward the eye (local viewer only)
+  if constexpr (kLocal) {
+    const V w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, in.inv_w, o));
+    vx = hn::Neg(hn::Mul(EvalPlane(d, in.p[0], o), w));
+    vy = hn::Neg(hn::Mul(EvalPlane(d, in.p[1], o), w));
+    vz = hn::Neg(hn::Mul(EvalPlane(d, in.p[2], o), w));
+    Normalize(d, vx, vy, vz);
+  }
+  V r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
+  for (const LightView& light : k.lights) {
+    const V lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
+            lz = hn::Set(d, light.l_view.z);
+    V hx, hy, hz;
+    if constexpr (kLocal) {
+      hx = hn::Add(lx, vx);
+      hy = hn::Add(ly, vy);
+      hz = hn::Add(lz, vz);
+      Normalize(d, hx, hy, hz);
+    } else {
+      hx = hn::Set(d, light.h_view.x);
+      hy = hn::Set(d, light.h_view.y);
+      hz = hn::Set(d, light.h_view.z);
+    }
+    const V diffuse = hn::Max(Dot<D>(nx, ny, nz, lx, ly, lz), hn::Zero(d));
+    const V specular = Brdf<kBrdf>(d, Dot<D>(nx, ny, nz, hx, hy, hz), m.lobe);
+    auto channel = [&](V acc, int c) {
+      return hn::Add(acc, hn::Mul(hn::Set(d, light.color[c]),
+                                  hn::Add(hn::Mul(hn::Set(d, m.kd[c]), diffuse),
+                                          hn::Mul(hn::Set(d, m.ks[c]), specular))));
+    };
+    r = channel(r, 0);
+    g = channel(g, 1);
+    b = channel(b, 2);
+  }
+  return {r, g, b};
+}
+
+// The normal planes (and, for a local viewer, position and 1/w planes) of a binned triangle:
+// attributes over w, linear in screen space. Back faces of two-sided scenes flip the normal.
+template <bool kLocal>
+HWY_INLINE void set_up_phong_planes(const Frame& frame, uint32_t entry, const SetupTriangle& t,
+                                    const Barycentrics& bary, PhongSpanInput& in) {
+  const ShadeConstants& k = frame.shade;
+  const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
+  auto plane_over_w = [&](AttrField field, int c, float scale) {
+    double q[3];
+    for (int i = 0; i < 3; ++i) q[i] = double(scale * frame.vertex(entry, t.attr[i], field)[c]) * t.inv_w[i];
+    return make_plane(bary, q[0], q[1], q[2]);
+  };
+  for (int c = 0; c < 3; ++c) {
+    in.n[c] = plane_over_w(&AttrArrays::n_view, c, flip);
+    if constexpr (kLocal) in.p[c] = plane_over_w(&AttrArrays::pos_view, c, 1.0f);
+  }
+  if constexpr (kLocal) in.inv_w = make_plane(bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+}
+
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, class D>
+HWY_INLINE auto PhongShade(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
+  const ColorVecs<D> c = PhongColor<kLocal, kBrdf>(d, in, o);
+  return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace fastshade
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard toggle
