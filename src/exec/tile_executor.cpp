@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 
+#include "exec/tile_io.h"
 #include "shade/lighting.h"
 
 namespace fastshade {
@@ -29,15 +31,21 @@ uint32_t background_rgba(const ShadeConstants& k) {
                    quantize(k.background.b, k.srgb));
 }
 
-void fill_rect(Image& image, const PixelRect& r, uint32_t rgba) {
-  for (int y = r.y0; y <= r.y1; ++y) {
-    uint8_t* out = image.rgb.data() + (std::size_t(y) * image.width + r.x0) * 3;
-    for (int x = r.x0; x <= r.x1; ++x, out += 3) {
-      out[0] = uint8_t(rgba);
-      out[1] = uint8_t(rgba >> 8);
-      out[2] = uint8_t(rgba >> 16);
-    }
+// The background as one RGB8 row of the widest tile: empty tiles copy it, row by row.
+std::vector<uint8_t> background_row(uint32_t rgba) {
+  std::vector<uint8_t> row(std::size_t(limits::kMaxTilePx) * 3);
+  for (std::size_t x = 0; x < row.size(); x += 3) {
+    row[x] = uint8_t(rgba);
+    row[x + 1] = uint8_t(rgba >> 8);
+    row[x + 2] = uint8_t(rgba >> 16);
   }
+  return row;
+}
+
+void fill_rect(Image& image, const PixelRect& r, const std::vector<uint8_t>& row) {
+  const std::size_t bytes = std::size_t(r.x1 - r.x0 + 1) * 3;
+  for (int y = r.y0; y <= r.y1; ++y)
+    std::memcpy(image.rgb.data() + (std::size_t(y) * image.width + r.x0) * 3, row.data(), bytes);
 }
 
 // A tile's triangles sit wherever their chunk put them and their vertices wherever the mesh
@@ -67,6 +75,7 @@ TileExecutor::~TileExecutor() = default;
 BackEndCounts TileExecutor::run(const Frame& frame, DrawTriangleFn draw, Image& image) {
   const TileGrid& grid = frame.grid;
   const uint32_t background = background_rgba(frame.shade);
+  const std::vector<uint8_t> background_rgb = background_row(background);
   std::atomic<long long> nonempty{0}, covered{0};
   // One tile per task, handed out dynamically: tile costs vary by orders of magnitude.
   tbb::parallel_for(
@@ -79,7 +88,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, DrawTriangleFn draw, Image& 
                                std::min((ty + 1) * grid.tile_px, grid.height) - 1};
           const uint32_t begin = frame.tile_begin[tile], end = frame.tile_begin[tile + 1];
           if (begin == end) {  // an empty tile costs only its background
-            fill_rect(image, rect, background);
+            fill_rect(image, rect, background_rgb);
             continue;
           }
           TileBuffers& buffers = scratch_->per_thread.local();
@@ -95,17 +104,14 @@ BackEndCounts TileExecutor::run(const Frame& frame, DrawTriangleFn draw, Image& 
             prefetch_ahead(frame, i, end);
             draw(frame, frame.bin_entries[i], target);
           }
+          const int h = rect.y1 - rect.y0 + 1;
+          rgba_rows_to_rgb(buffers.color.data(), stride,
+                           image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
+                           image.width * 3, w, h);
           long long tile_covered = 0;
-          for (int y = 0; y <= rect.y1 - rect.y0; ++y) {
-            const uint32_t* src = buffers.color.data() + y * stride;
+          for (int y = 0; y < h; ++y) {
             const float* depth = buffers.depth.data() + y * stride;
-            uint8_t* out = image.rgb.data() + (std::size_t(rect.y0 + y) * image.width + rect.x0) * 3;
-            for (int x = 0; x < w; ++x, out += 3) {
-              out[0] = uint8_t(src[x]);
-              out[1] = uint8_t(src[x] >> 8);
-              out[2] = uint8_t(src[x] >> 16);
-              tile_covered += depth[x] < 1.0f;
-            }
+            for (int x = 0; x < w; ++x) tile_covered += depth[x] < 1.0f;
           }
           nonempty.fetch_add(1, std::memory_order_relaxed);
           covered.fetch_add(tile_covered, std::memory_order_relaxed);
