@@ -4,6 +4,8 @@
 #pragma once
 #include <algorithm>
 
+#include <glm/vec3.hpp>
+
 #include "shade/span_kernels.h"
 
 namespace fastshade {
@@ -15,21 +17,30 @@ inline int segment_end(int xb, int j, int step, int xl, int xr) {
   return std::clamp(xb + j * step, xl, xr);
 }
 
-// The segment length (16, 8, 4, 2 or 1 px) for the seed block starting at xb on row py, whose
-// covered run is [xl, xr].
+// What the step decision needs of a triangle beyond its planes: unit vertex normals (view
+// space, flipped for two-sided back faces), 1/w at the vertices and, for a local viewer, the
+// centre's view-space position.
+struct TriangleNormals {
+  glm::vec3 n[3];
+  float inv_w[3];
+  glm::vec3 centre_view;
+};
+
+// The segment length (16, 8, 4, 2 or 1 px) for a whole triangle, decided once at setup.
 //
-// Along a block the normal turns through an angle theta (between its ends); a segment of L
-// pixels spans theta L / 16. Linear interpolation of f over a segment errs by at most
-// (segment angle)^2 / 8 * max |d^2 f / d angle^2|. For the Blinn-Phong colour, with
-// c = N.H in [c_min, c_max] on the block,
-//   |d^2/d angle^2 (kd max(N.L, 0))| <= kd,
-//   |d^2/d angle^2 c^n| <= n c_max^(n-2) (n (1 - c_min^2) + 1),
-// c_max from the closed-form peak of normalize(lerp(Na, Nb)).H (NOTES.md section 2) when the
-// peak is inside the block, else the larger end; summed over lights weighted by |colour|.
-// The longest L whose bound is within tol wins. A fixed length per object fails (NOTES: 19
-// LSB seen); this adapts to curvature and to how near the block is to a highlight.
-// Depends only on the block's position and the triangle: tile size never changes it.
-int hybrid_step(const PhongSpanInput& in, int xb, int py, int xl, int xr, float tol);
+// A segment of L pixels whose normal turns through an angle a errs, linearly interpolated,
+// by at most a^2 / 8 * max |d^2 f / d angle^2|. The normal turns by the part of d(n/w)/dx
+// across n/w, over |n/w|, per pixel (n/w is affine in screen space), estimated from the
+// vertices and the centre with 25 % margin. For the Blinn-Phong colour with
+// c = N.H <= c_max on the triangle,
+//   |d^2/d angle^2 (kd max(N.L, 0))| <= kd,   |d^2/d angle^2 c^n| <= n c_max^(n-2) (n + 1),
+// with c_max from the edges' closed-form maxima (NOTES.md section 2) or 1 when H lies inside
+// the cone of the vertex normals; summed over lights weighted by |colour|. The longest L whose
+// bound is within tol wins. One fixed length per object fails badly (NOTES.md: 19 LSB seen);
+// this adapts to the triangle's curvature and to how near it is to a highlight. A decision
+// per 16-px block was measured first and cost more than the Phong evaluations it saved on
+// small triangles (3x phong's time on the 4K spot frame).
+int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, float tol);
 
 // --max-error in LSB to the interpolation tolerance in colour units: half an LSB goes to the
 // final rounding, so that the rounded result stays within max_error of exact Phong.

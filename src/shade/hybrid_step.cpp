@@ -1,73 +1,99 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "core/limits.h"
+#include "shade/fast_math.h"
 #include "shade/hybrid.h"
 
 namespace fastshade {
 
 namespace {
 
-struct Dir {
-  double x, y, z;
-};
-double dot(const Dir& a, const Dir& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
-Dir normal_at(const PhongSpanInput& in, int px, int py) {
-  const PixelOffsets o = pixel_offsets(in.bary, px, py);
-  Dir n{plane_at(in.n[0], o), plane_at(in.n[1], o), plane_at(in.n[2], o)};
-  const double len = std::sqrt(dot(n, n));
-  return len > 0 ? Dir{n.x / len, n.y / len, n.z / len} : Dir{0, 0, 0};
-}
-
 // Largest N.H on the arc from na to nb (normalised lerp), NOTES.md section 2: an interior
 // maximum where X + Y > 0 and 0 < t < 1, with peak sqrt((X^2 + Y^2 - 2XYc) / (1 - c^2)).
-double arc_max(double x, double y, double c) {
-  double best = std::max(x, y);
-  if (x + y > 0 && c < 1.0 - 1e-12) {
-    const double t = (y - x * c) / ((1 - c) * (x + y));
-    if (t > 0 && t < 1) best = std::max(best, std::sqrt(std::max(0.0, (x * x + y * y - 2 * x * y * c) / (1 - c * c))));
+float arc_max(float x, float y, float c) {
+  float best = std::max(x, y);
+  const float one_minus_c = 1.0f - c;
+  if (x + y > 0.0f && one_minus_c > 1e-6f) {
+    const float t = (y - x * c) / (one_minus_c * (x + y));
+    if (t > 0.0f && t < 1.0f)
+      best = std::max(best, std::sqrt(std::max(0.0f, (x * x + y * y - 2.0f * x * y * c) /
+                                                          (one_minus_c * (1.0f + c)))));
   }
-  return std::min(best, 1.0);
+  return std::min(best, 1.0f);
+}
+
+// Is h inside the spherical triangle of the unit normals (then N.H reaches 1 inside)?
+bool inside_cone(const glm::vec3 n[3], const glm::vec3& h) {
+  int positive = 0, negative = 0;
+  for (int i = 0; i < 3; ++i) {
+    const glm::vec3 plane = glm::cross(n[i], n[(i + 1) % 3]);
+    const float side = glm::dot(plane, h) * glm::dot(plane, n[(i + 2) % 3]);
+    positive += side > 0.0f;
+    negative += side < 0.0f;
+  }
+  return negative == 0 && positive > 0;
+}
+
+// max N.H over the triangle's interpolated normals: edges' closed-form maxima, or 1 when the
+// highlight's centre is inside (the interior test the paper lacks, NOTES.md section 2).
+float triangle_max(const glm::vec3 n[3], const glm::vec3& h) {
+  if (inside_cone(n, h)) return 1.0f;
+  float best = -1.0f;
+  for (int i = 0; i < 3; ++i) {
+    const glm::vec3& a = n[i];
+    const glm::vec3& b = n[(i + 1) % 3];
+    best = std::max(best, arc_max(glm::dot(a, h), glm::dot(b, h), glm::dot(a, b)));
+  }
+  return best;
 }
 
 }  // namespace
 
-int hybrid_step(const PhongSpanInput& in, int xb, int py, int xl, int xr, float tol) {
-  const int block = limits::kSeedBlockPx;
+int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, float tol) {
+  constexpr int kBlock = limits::kSeedBlockPx;
   if (!(tol > 0)) return 1;
-  const int xa = std::clamp(xb, xl, xr), xz = std::clamp(xb + block, xl, xr);
-  if (xz - xa < 2) return block;  // no pixel between the ends
-  const Dir na = normal_at(in, xa, py), nb = normal_at(in, xz, py);
-  const double c_ab = std::clamp(dot(na, nb), -1.0, 1.0);
-  const double theta = std::acos(c_ab);
-  if (!(theta > 0)) return block;
+  // The interpolated vector q = n/w is affine in screen space; its direction turns along x at
+  // |dq/dx - (dq/dx . q^) q^| / |q| radians per pixel (only the part of dq/dx across q turns
+  // it: w alone changes q's length, not its direction). The rate is smooth over a triangle:
+  // its value at the vertices and the centre, with 25 % margin, stands for its maximum.
+  const glm::vec3 dq_dx(in.n[0].gx, in.n[1].gx, in.n[2].gx);
+  glm::vec3 q[4];
+  for (int i = 0; i < 3; ++i) q[i] = tri.n[i] * tri.inv_w[i];
+  q[3] = (q[0] + q[1] + q[2]) / 3.0f;
+  float turn_per_px = 0.0f;
+  for (const glm::vec3& qi : q) {
+    const float len = glm::length(qi);
+    if (!(len > 0.0f)) return 1;
+    const glm::vec3 dir = qi / len;
+    turn_per_px = std::max(turn_per_px, glm::length(dq_dx - glm::dot(dq_dx, dir) * dir) / len);
+  }
+  turn_per_px *= 1.25f;
+  if (!(turn_per_px > 0.0f)) return kBlock;
+  // Curvature of the colour in the normal's angle (shade/hybrid.h), over the triangle.
   const MaterialConstants& m = *in.material;
-  const double kd = std::max({m.kd.r, m.kd.g, m.kd.b}), ks = std::max({m.ks.r, m.ks.g, m.ks.b});
-  const double n = m.shininess_d;
-  double curvature = 0;
+  const float kd = std::max({m.kd.r, m.kd.g, m.kd.b}), ks = std::max({m.ks.r, m.ks.g, m.ks.b});
+  const float n = m.shininess;
+  float curvature = 0.0f;
   for (const LightView& light : in.shade->lights) {
-    const double weight = std::max({light.color.r, light.color.g, light.color.b});
-    // A local viewer's H varies across the block by far less than the normal does; the
-    // block's centre H stands for it, with the bound's slack.
-    Dir h{light.h_view.x, light.h_view.y, light.h_view.z};
-    if (in.shade->local_viewer) {
-      const PixelOffsets o = pixel_offsets(in.bary, (xa + xz) / 2, py);
-      const double w = 1.0 / plane_at(in.inv_w, o);
-      Dir v{-plane_at(in.p[0], o) * w, -plane_at(in.p[1], o) * w, -plane_at(in.p[2], o) * w};
-      const double lv = std::sqrt(dot(v, v));
-      h = {light.l_view.x + v.x / lv, light.l_view.y + v.y / lv, light.l_view.z + v.z / lv};
-      const double lh = std::sqrt(dot(h, h));
-      h = lh > 0 ? Dir{h.x / lh, h.y / lh, h.z / lh} : Dir{0, 0, 0};
-    }
-    const double x = dot(na, h), y = dot(nb, h);
-    const double c_max = arc_max(x, y, c_ab), c_min = std::max(std::min(x, y), 0.0);
-    const double spec = c_max > 0 ? n * std::pow(c_max, std::max(n - 2, 0.0)) * (n * (1 - c_min * c_min) + 1) : 0;
+    const float weight = std::max({light.color.r, light.color.g, light.color.b});
+    glm::vec3 h = light.h_view;
+    // A local viewer's H at the triangle's centre stands for all of it (H turns far less
+    // than the normal across a triangle: it follows the view direction).
+    if (in.shade->local_viewer) h = glm::normalize(light.l_view + glm::normalize(-tri.centre_view));
+    const float c_max = triangle_max(tri.n, h);
+    const float spec = c_max > 0.0f
+                           ? n * fast_math::exp2(std::max(n - 2.0f, 0.0f) * fast_math::log2(c_max)) * (n + 1.0f)
+                           : 0.0f;
     curvature += weight * (kd + ks * spec);
   }
-  for (int step = block; step >= 2; step /= 2) {
-    const double angle = theta * step / (xz - xa);
-    if (angle * angle / 8 * curvature <= tol) return step;
+  // A segment of `step` pixels turns by turn_per_px * step; its error is that squared / 8
+  // times the curvature.
+  for (int step = kBlock; step >= 2; step /= 2) {
+    const float angle = turn_per_px * float(step);
+    if (angle * angle / 8.0f * curvature <= tol) return step;
   }
   return 1;
 }

@@ -41,10 +41,9 @@ PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o);
 // Scalar references: per pixel, the same float operations as the SIMD kernels.
 void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
 void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
-// tol: the interpolation error allowed, in [0, 1] colour units; [xl, xr] the row's whole
-// covered run in the triangle, [x0, x1] the part to shade (shade/hybrid.h).
+// [xl, xr]: the row's whole covered run in the triangle; [x0, x1]: the part to shade.
 struct HybridRun {
-  float tol;
+  int step;  // segment length for the triangle (shade/hybrid.h), 1 = per-pixel Phong
   int xl, xr;
 };
 void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);

@@ -94,7 +94,7 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
   const bool srgb = in.shade->srgb;
   const int block = limits::kSeedBlockPx;
   for (int xb = x0 & ~(block - 1); xb <= x1; xb += block) {
-    const int step = hybrid_step(in, xb, py, run.xl, run.xr, run.tol);
+    const int step = run.step;
     PhongColor ends[limits::kSeedBlockPx + 1];
     if (step > 1)
       for (int j = 0; j * step <= block; ++j)

@@ -143,34 +143,60 @@ TEST_F(SpanKernels, PhongMatchesScalarReferenceOnEveryIsaBrdfAndViewer) {
   }
 }
 
-TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsa) {
+TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
   std::mt19937 rng(13);
   ShadeConstants k;
   k.ambient = glm::vec3(0.05f);
   k.lights.push_back({glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0), glm::vec3(1.0f)});
   k.lights[0].h_view = glm::normalize(k.lights[0].l_view + glm::vec3(0, 0, 1));
-  int segmented = 0;
+  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(BrdfChoice{}, 40.0)};
   for (const std::string& isa : available_isas()) {
     select_isa(isa);
-    for (double n : {10.0, 100.0, 1000.0})
-      for (float tol_lsb : {0.5f, 1.0f, 4.0f}) {
-        MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), float(n), n, make_brdf(BrdfChoice{}, n)};
-        const Fixture f = random_triangle(rng);
-        PhongSpanInput in;
-        in.bary = f.bary;
-        in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
-        for (int c = 0; c < 3; ++c)  // gently curved: segments longer than a pixel happen
-          in.n[c] = random_plane(f, rng, c == 2 ? 0.9f : -0.1f, c == 2 ? 1.0f : 0.1f);
-        in.material = &m;
-        in.shade = &k;
-        const HybridRun run{hybrid_tolerance(tol_lsb), 145, 190};
-        for (int xb = 144; xb < 190; xb += 16) segmented += hybrid_step(in, xb, 100, run.xl, run.xr, run.tol) > 1;
-        expect_same("hybrid " + isa, rng, 1,
-                    [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
-                    [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
-      }
+    for (int step : {1, 2, 4, 8, 16}) {
+      const Fixture f = random_triangle(rng);
+      PhongSpanInput in;
+      in.bary = f.bary;
+      in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
+      for (int c = 0; c < 3; ++c) in.n[c] = random_plane(f, rng, c == 2 ? 0.5f : -0.5f, 1.0f);
+      in.material = &m;
+      in.shade = &k;
+      const HybridRun run{step, 145, 190};  // the row's run starts and ends off the blocks
+      expect_same("hybrid " + isa + " step " + std::to_string(step), rng, 1,
+                  [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
+                  [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
+    }
   }
-  EXPECT_GT(segmented, 0) << "no block was ever interpolated: the test shows nothing";
+}
+
+TEST(HybridStep, FollowsCurvatureAndHighlights) {
+  ShadeConstants k;
+  k.lights.push_back({glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(1.0f)});
+  const double n = 100;
+  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), float(n), n, make_brdf(BrdfChoice{}, n)};
+  std::mt19937 rng(3);
+  const Fixture f = random_triangle(rng);
+  auto step_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) {
+    TriangleNormals tn{{glm::normalize(n0), glm::normalize(n1), glm::normalize(n2)},
+                       {f.tri.inv_w[0], f.tri.inv_w[1], f.tri.inv_w[2]}, glm::vec3(0, 0, -5)};
+    PhongSpanInput in;
+    for (int c = 0; c < 3; ++c)
+      in.n[c] = make_plane(f.bary, double(tn.n[0][c]) * tn.inv_w[0], double(tn.n[1][c]) * tn.inv_w[1],
+                           double(tn.n[2][c]) * tn.inv_w[2]);
+    in.material = &m;
+    in.shade = &k;
+    return hybrid_triangle_step(in, tn, hybrid_tolerance(1.0));
+  };
+  // Equal normals: nothing to interpolate wrongly, the longest segments.
+  EXPECT_EQ(step_for({0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1}), 16);
+  // Curved and facing the highlight (H = +z inside the normals' cone): per-pixel Phong.
+  EXPECT_EQ(step_for({0.4f, 0, 1}, {-0.4f, 0.3f, 1}, {0, -0.4f, 1}), 1);
+  // The same curvature turned far from the highlight: longer segments.
+  EXPECT_GT(step_for({1, 0, 0.2f}, {1, 0.3f, 0.35f}, {1, -0.3f, 0.3f}), 1);
+  // No budget: always per pixel.
+  PhongSpanInput in;
+  in.material = &m;
+  in.shade = &k;
+  EXPECT_EQ(hybrid_triangle_step(in, TriangleNormals{}, 0.0f), 1);
 }
 
 }  // namespace
