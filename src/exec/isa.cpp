@@ -13,7 +13,10 @@ struct IsaName {
   const char* name;
   int64_t target;
 };
-constexpr IsaName kIsas[] = {{"scalar", HWY_EMU128}, {"sse4", HWY_SSE4}, {"avx2", HWY_AVX2},
+// "scalar" is Highway's portable fallback: HWY_SCALAR on x86-64 builds whose baseline is
+// SSE2 (this one), HWY_EMU128 elsewhere; whichever the build compiled.
+constexpr int64_t kScalarTarget = (HWY_TARGETS & HWY_SCALAR) ? HWY_SCALAR : HWY_EMU128;
+constexpr IsaName kIsas[] = {{"scalar", kScalarTarget}, {"sse4", HWY_SSE4}, {"avx2", HWY_AVX2},
                              {"avx512", HWY_AVX3}};
 
 // Read once, before select_isa() first narrows what Highway reports as supported.
