@@ -9,6 +9,7 @@
 
 #include <hwy/highway.h>
 
+#include "shade/brdf_variants.h"
 #include "shade/hybrid.h"
 #include "shade/methods.h"
 #include "shade/phong-inl.h"
@@ -116,6 +117,11 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  const SetupTriangle& whole = frame.triangle(entry);
+  if (whole.px_max[0] - whole.px_min[0] + 1 < kHybridMinWidthPx) {
+    DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
+    return;
+  }
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
@@ -140,13 +146,6 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     step = hybrid_triangle_step(in, normals, k.hybrid_tolerance);
     ready = true;
   };
-  if (t.px_max[0] - t.px_min[0] + 1 < kHybridMinWidthPx) {
-    ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
-      if (!ready) set_up();
-      return PhongShade<kLocal, kSrgb, kBrdf>(d, in, o);
-    });
-    return;
-  }
   // Rows through the whole triangle (tile rows only): a row's covered run decides its
   // segment ends, whatever tile this is.
   const PixelRect rows{t.px_min[0], tri.rect.y0, t.px_max[0], tri.rect.y1};
@@ -159,38 +158,12 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   });
 }
 
-#define FASTSHADE_BRDF_CASES(F, L, S)                                      \
-  switch (kind) {                                                          \
-    case BrdfKind::Exact: return F<L, S, BrdfKind::Exact>;                 \
-    case BrdfKind::CosK: return F<L, S, BrdfKind::CosK>;                   \
-    case BrdfKind::Schlick: return F<L, S, BrdfKind::Schlick>;             \
-    case BrdfKind::SchlickPow2: return F<L, S, BrdfKind::SchlickPow2>;     \
-    case BrdfKind::Quadratic: return F<L, S, BrdfKind::Quadratic>;         \
-    case BrdfKind::QuadraticFit: return F<L, S, BrdfKind::QuadraticFit>;   \
-    case BrdfKind::Poly2: return F<L, S, BrdfKind::Poly2>;                 \
-    case BrdfKind::Poly3: return F<L, S, BrdfKind::Poly3>;                 \
-  }                                                                        \
-  return nullptr;
-
-template <bool kLocal, bool kSrgb>
-DrawTriangleFn PickDraw(BrdfKind kind) { FASTSHADE_BRDF_CASES(&DrawHybrid, kLocal, kSrgb) }
-
 using HybridSpanFn = void (*)(const PhongSpanInput&, const HybridRun&, int, int, int, RowTarget);
-template <bool kLocal, bool kSrgb>
-HybridSpanFn PickSpan(BrdfKind kind) { FASTSHADE_BRDF_CASES(&HybridSpanImpl, kLocal, kSrgb) }
-#undef FASTSHADE_BRDF_CASES
-
-DrawTriangleFn SelectHybrid(bool local, bool srgb, BrdfKind kind) {
-  if (local) return srgb ? PickDraw<true, true>(kind) : PickDraw<true, false>(kind);
-  return srgb ? PickDraw<false, true>(kind) : PickDraw<false, false>(kind);
-}
+FASTSHADE_DEFINE_VARIANT_PICKER(SelectHybrid, DrawHybrid, DrawTriangleFn)
+FASTSHADE_DEFINE_VARIANT_PICKER(PickHybridSpan, HybridSpanImpl, HybridSpanFn)
 
 void HybridSpan(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row) {
-  const bool local = in.shade->local_viewer, srgb = in.shade->srgb;
-  const BrdfKind kind = in.material->lobe.kind;
-  const HybridSpanFn fn = local ? (srgb ? PickSpan<true, true>(kind) : PickSpan<true, false>(kind))
-                                : (srgb ? PickSpan<false, true>(kind) : PickSpan<false, false>(kind));
-  fn(in, run, py, x0, x1, row);
+  PickHybridSpan(in.shade->local_viewer, in.shade->srgb, in.material->lobe.kind)(in, run, py, x0, x1, row);
 }
 
 }  // namespace HWY_NAMESPACE

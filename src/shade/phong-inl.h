@@ -10,6 +10,7 @@
 #include <hwy/highway.h>
 
 #include "shade/brdf-inl.h"
+#include "shade/method.h"
 #include "shade/span_loop-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -104,6 +105,29 @@ template <bool kLocal, bool kSrgb, BrdfKind kBrdf, class D>
 HWY_INLINE auto PhongShade(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
   const ColorVecs<D> c = PhongColor<kLocal, kBrdf>(d, in, o);
   return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+}
+
+// `phong` for one binned triangle in a tile.
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  TriangleInTile tri;
+  if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
+  const SetupTriangle& t = *tri.tri;
+  const ShadeConstants& k = frame.shade;
+  // Shading planes are set up on the first vector that passes the depth test: in a dense
+  // mesh many triangles are entirely hidden, and they cost only coverage and depth.
+  PhongSpanInput in;
+  in.material = &k.materials[t.material];
+  in.shade = &k;
+  bool ready = false;
+  auto set_up = [&] {
+    set_up_phong_planes<kLocal>(frame, entry, t, tri.bary, in);
+    ready = true;
+  };
+  ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
+    if (!ready) set_up();
+    return PhongShade<kLocal, kSrgb, kBrdf>(d, in, o);
+  });
 }
 
 }  // namespace HWY_NAMESPACE
