@@ -17,7 +17,8 @@ struct RenderOptions {
   bool srgb = false;       // encode with the sRGB curve before quantising
   std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: a process-wide choice
   std::string brdf = "exact";  // specular approximation (docs/KERNELS.md)
-  double max_error = 1.0;      // hybrid: error budget in 8-bit steps (LSB)
+  double max_error = 1.0;      // hybrid, --normals adaptive: error budget in 8-bit steps (LSB)
+  std::string normals = "normalize";  // phong: normalize | adaptive | equal-angle
   std::string to_string() const;
 };
 

@@ -18,6 +18,7 @@
 #include "front/vertex_stage.h"
 #include "shade/hybrid.h"
 #include "shade/method.h"
+#include "shade/normal_blocks.h"
 
 namespace fastshade {
 
@@ -43,6 +44,7 @@ void validate(const RenderOptions& o) {
     throw InputError("--method", "unknown method '" + o.method + "' (expected one of: " + names + ")");
   }
   parse_brdf(o.brdf, "--brdf");
+  parse_normals(o.normals, "--normals");
   if (!(o.max_error >= 0 && o.max_error <= 255))
     throw InputError("--max-error", "expected 0 to 255 (8-bit steps), got " + std::to_string(o.max_error));
   if (const std::string why = method->refuse(o); !why.empty()) {
@@ -108,6 +110,7 @@ struct Renderer::Impl {
     frame.grid = make_grid(scene.width, scene.height, o.tile_px);
     frame.shade = shade_constants(scene, xf, o.srgb, parse_brdf(o.brdf, "--brdf"));
     frame.shade.hybrid_tolerance = hybrid_tolerance(o.max_error);
+    frame.shade.normals = parse_normals(o.normals, "--normals");
     needs = method->needs(frame.shade);
     draw = method->select(frame.shade);
     setup.viewport = make_viewport(scene.width, scene.height);

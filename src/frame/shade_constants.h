@@ -5,6 +5,7 @@
 #include <glm/vec3.hpp>
 
 #include "shade/brdf.h"
+#include "shade/normal_blocks_mode.h"
 
 namespace fastshade {
 
@@ -31,7 +32,8 @@ struct ShadeConstants {
   bool two_sided = false;
   bool srgb = false;
   BrdfChoice brdf;  // --brdf
-  float hybrid_tolerance = 0;  // hybrid: interpolation error allowed, colour units (--max-error)
+  float hybrid_tolerance = 0;  // hybrid and --normals adaptive: error allowed, colour units (--max-error)
+  SpanNormals normals = SpanNormals::Normalize;  // --normals
 };
 
 }  // namespace fastshade

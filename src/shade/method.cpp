@@ -17,12 +17,18 @@ const std::array kMethods = {
     Method{"hybrid",
            "Phong at the ends of 2^m-pixel segments, linear between, m adapted per 16-px block "
            "to --max-error",
-           phong_needs, select_hybrid, accepts_all},
+           phong_needs, select_hybrid, refuses_normals},
     Method{"gouraud", "Blinn-Phong per vertex, colour interpolated perspective-correctly",
-           gouraud_needs, select_gouraud, accepts_all},
+           gouraud_needs, select_gouraud, refuses_normals},
 };
 
 }  // namespace
+
+std::string refuses_normals(const RenderOptions& o) {
+  if (o.normals != "normalize")
+    return "--normals: only phong interpolates normals along a span; use --method phong";
+  return {};
+}
 
 std::span<const Method> all_methods() { return kMethods; }
 

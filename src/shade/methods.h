@@ -10,6 +10,10 @@ std::string reference_refuses(const RenderOptions& options);
 
 AttrNeeds phong_needs(const ShadeConstants& shade);
 DrawTriangleFn select_phong(const ShadeConstants& shade);
+DrawTriangleFn select_phong_normals(const ShadeConstants& shade);  // --normals other than normalize
+
+// Methods that interpolate no per-pixel normal refuse --normals.
+std::string refuses_normals(const RenderOptions& options);
 
 // For methods that take every option.
 inline std::string accepts_all(const RenderOptions&) { return {}; }

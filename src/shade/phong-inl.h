@@ -38,13 +38,24 @@ struct ColorVecs {
 };
 
 // Blinn-Phong at the lanes' pixels before quantisation; phong_color_scalar() is its twin.
+template <bool kLocal, BrdfKind kBrdf, class D, class V = hn::Vec<D>>
+HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
+                                             const LaneOffsets<D>& o);
+
 template <bool kLocal, BrdfKind kBrdf, class D>
 HWY_INLINE ColorVecs<D> PhongColor(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
   using V = hn::Vec<D>;
-  const MaterialConstants& m = *in.material;
-  const ShadeConstants& k = *in.shade;
   V nx = EvalPlane(d, in.n[0], o), ny = EvalPlane(d, in.n[1], o), nz = EvalPlane(d, in.n[2], o);
   Normalize(d, nx, ny, nz);
+  return PhongColorFromNormal<kLocal, kBrdf>(d, in, nx, ny, nz, o);
+}
+
+// Blinn-Phong for unit normals in lanes; phong_color_from_normal_scalar() is its twin.
+template <bool kLocal, BrdfKind kBrdf, class D, class V>
+HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
+                                             const LaneOffsets<D>& o) {
+  const MaterialConstants& m = *in.material;
+  const ShadeConstants& k = *in.shade;
   V vx, vy, vz;  // toward the eye (local viewer only)
   if constexpr (kLocal) {
     const V w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, in.inv_w, o));

@@ -44,6 +44,7 @@ AttrNeeds phong_needs(const ShadeConstants& shade) {
 }
 
 DrawTriangleFn select_phong(const ShadeConstants& shade) {
+  if (shade.normals != SpanNormals::Normalize) return select_phong_normals(shade);
   return HWY_DYNAMIC_DISPATCH(SelectPhong)(shade.local_viewer, shade.srgb, shade.brdf.kind);
 }
 

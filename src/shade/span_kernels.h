@@ -6,6 +6,7 @@
 
 #include "frame/shade_constants.h"
 #include "raster/planes.h"
+#include "shade/normal_blocks_mode.h"
 
 namespace fastshade {
 
@@ -37,6 +38,9 @@ struct PhongColor {
   float c[3];
 };
 PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o);
+// The same for a given unit normal (the --normals paths).
+PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
+                                          const PixelOffsets& o);
 
 // Scalar references: per pixel, the same float operations as the SIMD kernels.
 void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
@@ -52,6 +56,12 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
 void gouraud_span(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
 void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
 void hybrid_span(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
+
+// --normals adaptive | equal-angle (shade/normal_blocks.h); run.step is unused.
+void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
+                         int py, int x0, int x1, RowTarget row);
+void normals_span(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+                  int x0, int x1, RowTarget row);
 
 // quantize() (shade/lighting.h) as the SIMD kernels compute it: the same float operations,
 // with the kernels' exp2/log2 for the sRGB curve.

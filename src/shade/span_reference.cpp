@@ -6,6 +6,7 @@
 #include "shade/fast_math.h"
 #include "shade/method.h"
 #include "shade/hybrid.h"
+#include "shade/normal_blocks.h"
 #include "shade/span_kernels.h"
 
 namespace fastshade {
@@ -45,12 +46,16 @@ void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, 
 }
 
 PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o) {
-  const MaterialConstants& m = *in.material;
-  const ShadeConstants& k = *in.shade;
   float nx = plane_at(in.n[0], o), ny = plane_at(in.n[1], o), nz = plane_at(in.n[2], o);
   const float len2 = (nx * nx + ny * ny) + nz * nz;
   const float inv_len = len2 > 0.0f ? fast_math::inv_sqrt(len2) : 0.0f;
-  nx *= inv_len, ny *= inv_len, nz *= inv_len;
+  return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o);
+}
+
+PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
+                                          const PixelOffsets& o) {
+  const MaterialConstants& m = *in.material;
+  const ShadeConstants& k = *in.shade;
   float vx = 0, vy = 0, vz = 0;  // toward the eye (local viewer)
   if (k.local_viewer) {
     const float w = 1.0f / plane_at(in.inv_w, o);
@@ -112,6 +117,25 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
         for (int ch = 0; ch < 3; ++ch)
           rgb.c[ch] = ends[j].c[ch] + t * (ends[j + 1].c[ch] - ends[j].c[ch]);
       }
+      row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
+                                quantize_like_simd(rgb.c[2], srgb));
+    }
+  }
+}
+
+void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
+                         int py, int x0, int x1, RowTarget row) {
+  const bool srgb = in.shade->srgb;
+  const int block = limits::kSeedBlockPx;
+  NormalBlock nb;
+  for (int xb = x0 & ~(block - 1); xb <= x1; xb += block) {
+    make_normal_block(in, mode, tol, xb, py, run.xl, run.xr, nb);
+    for (int px = std::max(xb, x0); px <= std::min(xb + block - 1, x1); ++px) {
+      const PixelOffsets o = pixel_offsets(in.bary, px, py);
+      if (!depth_pass(in.depth, o, row.depth[px])) continue;
+      const float a = nb.alpha[px - xb], b = nb.beta[px - xb];
+      const PhongColor rgb = phong_color_from_normal_scalar(
+          in, a * nb.na[0] + b * nb.nz[0], a * nb.na[1] + b * nb.nz[1], a * nb.na[2] + b * nb.nz[2], o);
       row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
                                 quantize_like_simd(rgb.c[2], srgb));
     }

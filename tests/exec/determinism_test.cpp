@@ -10,9 +10,11 @@ namespace fastshade {
 namespace {
 
 void expect_identical_across_threads_and_tiles(const Scene& scene, const std::string& method,
-                                               const std::string& name) {
+                                               const std::string& name,
+                                               const std::string& normals = "normalize") {
   RenderOptions base;
   base.method = method;
+  base.normals = normals;
   base.threads = 1;
   base.tile_px = 64;
   const Image expected = render(scene, base);
@@ -39,6 +41,8 @@ TEST(Determinism, SceneFilesAreByteIdenticalForAnyThreadsAndTiles) {
     const Scene scene = load_scene(scenes / file);
     for (const char* method : {"phong", "gouraud", "hybrid", "reference"})
       expect_identical_across_threads_and_tiles(scene, method, file);
+    for (const char* normals : {"adaptive", "equal-angle"})
+      expect_identical_across_threads_and_tiles(scene, "phong", file, normals);
     ++count;
   }
   EXPECT_EQ(count, 3);

@@ -11,6 +11,7 @@
 #include "frame/edge_function.h"
 #include "shade/brdf.h"
 #include "shade/hybrid.h"
+#include "shade/normal_blocks.h"
 #include "shade/span_kernels.h"
 
 namespace fastshade {
@@ -164,6 +165,73 @@ TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
       expect_same("hybrid " + isa + " step " + std::to_string(step), rng, 1,
                   [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
                   [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
+    }
+  }
+}
+
+TEST_F(SpanKernels, NormalsPathsMatchScalarReferenceOnEveryIsa) {
+  std::mt19937 rng(14);
+  ShadeConstants k;
+  k.ambient = glm::vec3(0.05f);
+  k.lights.push_back({glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0), glm::vec3(1.0f)});
+  k.lights[0].h_view = glm::normalize(k.lights[0].l_view + glm::vec3(0, 0, 1));
+  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(BrdfChoice{}, 40.0)};
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    for (SpanNormals mode : {SpanNormals::Adaptive, SpanNormals::EqualAngle})
+      for (float tol : {0.0f, hybrid_tolerance(2.0)}) {
+        const Fixture f = random_triangle(rng);
+        PhongSpanInput in;
+        in.bary = f.bary;
+        in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
+        for (int c = 0; c < 3; ++c) in.n[c] = random_plane(f, rng, c == 2 ? 0.3f : -0.8f, 1.0f);
+        in.material = &m;
+        in.shade = &k;
+        const HybridRun run{1, 145, 190};
+        expect_same("normals " + isa, rng, 1,
+                    [&](RowTarget r, int x0, int x1) { normals_span(in, mode, tol, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
+                    [&](RowTarget r, int x0, int x1) { normals_span_scalar(in, mode, tol, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
+      }
+  }
+}
+
+// The block weights give the normals they promise: equal-angle = slerp of the ends, adaptive
+// with no budget = the normalised lerp, even for per-pixel angles far below 2.4e-4, equal and
+// antiparallel end normals.
+TEST(NormalBlocks, WeightsReproduceSlerpAndNormalisedLerp) {
+  std::mt19937 rng(21);
+  const Fixture f = random_triangle(rng);
+  ShadeConstants k;
+  k.lights.push_back({glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(1.0f)});
+  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(BrdfChoice{}, 40.0)};
+  for (double angle : {1.0, 0.1, 1e-3, 1e-5, 1e-7, 0.0, 3.14159}) {
+    const glm::dvec3 a(0, 0, 1), b(std::sin(angle), 0, std::cos(angle));
+    PhongSpanInput in;
+    in.bary = f.bary;
+    in.material = &m;
+    in.shade = &k;
+    // Plane n(x) along row 100: a at x = 160, b at x = 176 (one block), w = 1.
+    for (int c = 0; c < 3; ++c) {
+      in.n[c] = Plane{float(a[c] + (b[c] - a[c]) * (160 - f.bary.ax) / -16.0 * -1.0), float((b[c] - a[c]) / 16.0), 0.0f, -2.0f, 2.0f};
+      const float at160 = plane_at(in.n[c], pixel_offsets(f.bary, 160, f.bary.ay));
+      in.n[c].v0 += float(a[c]) - at160;
+    }
+    for (SpanNormals mode : {SpanNormals::EqualAngle, SpanNormals::Adaptive}) {
+      NormalBlock nb;
+      make_normal_block(in, mode, 0.0f, 160, f.bary.ay, 150, 200, nb);
+      const glm::dvec3 na(nb.na[0], nb.na[1], nb.na[2]), nz(nb.nz[0], nb.nz[1], nb.nz[2]);
+      for (int i = 0; i < 16; ++i) {
+        const glm::dvec3 got = double(nb.alpha[i]) * na + double(nb.beta[i]) * nz;
+        ASSERT_TRUE(std::isfinite(got.x) && std::isfinite(got.z)) << angle;
+        const double psi = std::acos(std::clamp(glm::dot(na, nz), -1.0, 1.0));
+        if (psi > 3.0) continue;  // antiparallel: only finiteness is promised
+        glm::dvec3 want;
+        if (mode == SpanNormals::EqualAngle && std::sin(psi) > 1e-6)
+          want = (std::sin((16 - i) * psi / 16) * na + std::sin(i * psi / 16) * nz) / std::sin(psi);
+        else
+          want = glm::normalize((1 - i / 16.0) * na + (i / 16.0) * nz);
+        EXPECT_LT(glm::length(got - want), 2e-6) << "angle " << angle << " pixel " << i;
+      }
     }
   }
 }

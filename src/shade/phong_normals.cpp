@@ -1,0 +1,119 @@
+// `phong --normals adaptive|equal-angle`: normals from per-block weights of the block's two
+// end normals (shade/normal_blocks.h), Blinn-Phong per pixel as `phong`.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shade/phong_normals.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include <algorithm>
+
+#include <hwy/highway.h>
+
+#include "shade/brdf_variants.h"
+#include "shade/methods.h"
+#include "shade/normal_blocks.h"
+#include "shade/phong-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace fastshade {
+namespace HWY_NAMESPACE {
+
+// Triangles narrower than this (whole bounding box: every tile decides alike) normalise per
+// pixel: a block's end normals would cost as much as the pixels.
+inline constexpr int kBlockNormalsMinWidthPx = 8;
+
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
+                     int py, int x0, int x1, RowTarget row) {
+  const hn::ScalableTag<float> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  const hn::RebindToUnsigned<decltype(d)> du;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  constexpr int kBlock = limits::kSeedBlockPx;
+  const auto iota = hn::Iota(di, 0);
+  const auto dy = hn::Set(d, static_cast<float>(py - in.bary.ay));
+  NormalBlock nb;
+  for (int xb = x0 & ~(kBlock - 1); xb <= x1; xb += kBlock) {
+    make_normal_block(in, mode, tol, xb, py, run.xl, run.xr, nb);
+    const int lo = std::max(xb, x0), hi = std::min(xb + kBlock - 1, x1);
+    for (int x = lo; x <= hi; x += lanes) {
+      const auto xi = hn::Add(hn::Set(di, x), iota);
+      const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, hi + 1)));
+      const auto o = MakeLaneOffsets(d, in.bary, xi, dy);
+      const auto z = EvalPlane(d, in.depth, o);
+      const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
+      if (hn::AllFalse(d, pass)) continue;
+      const auto alpha = hn::LoadU(d, nb.alpha + (x - xb)), beta = hn::LoadU(d, nb.beta + (x - xb));
+      auto mix = [&](int c) {
+        return hn::Add(hn::Mul(alpha, hn::Set(d, nb.na[c])), hn::Mul(beta, hn::Set(d, nb.nz[c])));
+      };
+      const auto c = PhongColorFromNormal<kLocal, kBrdf>(d, in, mix(0), mix(1), mix(2), o);
+      const auto rgba = PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+      hn::BlendedStore(z, pass, d, row.depth + x);
+      hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
+    }
+  }
+}
+
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+void DrawPhongNormals(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  const SetupTriangle& whole = frame.triangle(entry);
+  if (whole.px_max[0] - whole.px_min[0] + 1 < kBlockNormalsMinWidthPx) {
+    DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
+    return;
+  }
+  TriangleInTile tri;
+  if (!prepare_triangle(whole, tt.rect, tri)) return;
+  const ShadeConstants& k = frame.shade;
+  PhongSpanInput in;
+  in.material = &k.materials[whole.material];
+  in.shade = &k;
+  bool ready = false;
+  // Rows through the whole triangle (tile rows only): the covered run fixes the block ends.
+  const PixelRect rows{whole.px_min[0], tri.rect.y0, whole.px_max[0], tri.rect.y1};
+  for_each_span(tri.edges, rows, [&](int py, int xl, int xr) {
+    const int x0 = std::max(xl, tri.rect.x0), x1 = std::min(xr, tri.rect.x1);
+    if (x0 > x1) return;
+    tri.set_up_planes();
+    if (!ready) {
+      in.bary = tri.bary;
+      in.depth = tri.depth;
+      set_up_phong_planes<kLocal>(frame, entry, whole, tri.bary, in);
+      ready = true;
+    }
+    NormalsSpanImpl<kLocal, kSrgb, kBrdf>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0, x1,
+                                          tile_row(tt, py));
+  });
+}
+
+using NormalsSpanFn = void (*)(const PhongSpanInput&, SpanNormals, float, const HybridRun&, int, int,
+                               int, RowTarget);
+FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhongNormals, DrawPhongNormals, DrawTriangleFn)
+FASTSHADE_DEFINE_VARIANT_PICKER(PickNormalsSpan, NormalsSpanImpl, NormalsSpanFn)
+
+void NormalsSpan(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+                 int x0, int x1, RowTarget row) {
+  PickNormalsSpan(in.shade->local_viewer, in.shade->srgb, in.material->lobe.kind)(in, mode, tol, run, py,
+                                                                                  x0, x1, row);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace fastshade
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace fastshade {
+
+HWY_EXPORT(SelectPhongNormals);
+HWY_EXPORT(NormalsSpan);
+
+DrawTriangleFn select_phong_normals(const ShadeConstants& shade) {
+  return HWY_DYNAMIC_DISPATCH(SelectPhongNormals)(shade.local_viewer, shade.srgb, shade.brdf.kind);
+}
+
+void normals_span(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+                  int x0, int x1, RowTarget row) {
+  HWY_DYNAMIC_DISPATCH(NormalsSpan)(in, mode, tol, run, py, x0, x1, row);
+}
+
+}  // namespace fastshade
+#endif
