@@ -21,7 +21,7 @@ scene() {  # name object shininess
 JSON
 }
 
-configs=("gouraud" "phong" "hybrid --max-error 0.5" "hybrid --max-error 1" "hybrid --max-error 2"
+configs=("gouraud" "phong" "phong --normals adaptive" "phong --normals equal-angle" "hybrid --max-error 0.5" "hybrid --max-error 1" "hybrid --max-error 2"
          "hybrid --max-error 4")
 for b in cosk:1 cosk:3 schlick schlick-pow2 quadratic quadratic-fit poly2 poly3; do
   configs+=("phong --brdf $b")
