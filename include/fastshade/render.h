@@ -19,6 +19,7 @@ struct RenderOptions {
   std::string brdf = "exact";  // specular approximation (docs/KERNELS.md)
   double max_error = 1.0;      // hybrid, --normals adaptive: error budget in 8-bit steps (LSB)
   std::string normals = "normalize";  // phong: normalize | adaptive | equal-angle
+  std::string gouraud = "increments";  // gouraud: increments | sierpinski (split large triangles)
   std::string to_string() const;
 };
 

@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   r->add_flag("--srgb", render.options.srgb, "encode with the sRGB curve (default: linear)");
   r->add_option("--max-error", render.options.max_error,
                 "hybrid: error budget in 8-bit steps (default 1)");
+  r->add_option("--gouraud", render.options.gouraud,
+                "gouraud: increments, or sierpinski (large triangles split at edge midpoints)");
   r->add_option("--normals", render.options.normals,
                 "phong: per-pixel normals by normalize, adaptive (eq. 6) or equal-angle (eq. 7)");
   r->add_option("--brdf", render.options.brdf,

@@ -33,6 +33,10 @@ inline constexpr int kDefaultTilePx = 64;
 inline constexpr int kSeedBlockPx = 16;
 static_assert((kSeedBlockPx & (kSeedBlockPx - 1)) == 0, "blocks are found by masking");
 
+// --gouraud sierpinski splits triangles whose bounding box reaches this many pixels on a side:
+// half the default tile, so a split triangle's parts usually land in different bins.
+inline constexpr int kSierpinskiMinPx = 32;
+
 // Front-end chunk: triangles per binning chunk. Enough to amortise a chunk's bin headers
 // (one counter per tile), small enough that 2 threads get many chunks on a 70k mesh.
 inline constexpr int kTrianglesPerChunk = 4096;

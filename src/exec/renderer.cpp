@@ -45,6 +45,10 @@ void validate(const RenderOptions& o) {
   }
   parse_brdf(o.brdf, "--brdf");
   parse_normals(o.normals, "--normals");
+  if (o.gouraud != "increments" && o.gouraud != "sierpinski")
+    throw InputError("--gouraud", "expected increments or sierpinski, got '" + o.gouraud + "'");
+  if (o.gouraud == "sierpinski" && o.method != "gouraud")
+    throw InputError("--gouraud", "sierpinski subtriangles apply to --method gouraud only");
   if (!(o.max_error >= 0 && o.max_error <= 255))
     throw InputError("--max-error", "expected 0 to 255 (8-bit steps), got " + std::to_string(o.max_error));
   if (const std::string why = method->refuse(o); !why.empty()) {
@@ -116,6 +120,7 @@ struct Renderer::Impl {
     setup.viewport = make_viewport(scene.width, scene.height);
     setup.cull = scene.cull;
     setup.with_attrs = needs.normal || needs.color || needs.position;
+    setup.sierpinski = o.gouraud == "sierpinski";
     const std::size_t chunks =
         (geometry.triangles.size() + limits::kTrianglesPerChunk - 1) / limits::kTrianglesPerChunk;
     frame.chunks.resize(chunks);

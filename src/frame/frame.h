@@ -44,6 +44,9 @@ struct SetupTriangle {
 };
 inline constexpr uint32_t kClippedAttr = 0x80000000u;
 inline constexpr uint16_t kBackFacing = 1;
+// Bits 1-3: which Sierpinski part of its triangle this record covers (0: the whole triangle;
+// frame/edge_function.h). The record keeps the parent's vertices: attributes are the parent's.
+inline constexpr int kSierpinskiShift = 1;
 static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
 
 // One chunk of the front end's work: the triangles it set up (in draw order) and the vertex
@@ -57,9 +60,10 @@ struct Chunk {
 };
 
 // Bin entries name a triangle as (chunk, index in chunk). Clipping one input triangle makes at
-// most 7 (a 9-gon fanned), so 15 bits of index hold a chunk of 4096 inputs.
-inline constexpr int kBinIndexBits = 15;
-static_assert((limits::kTrianglesPerChunk * 7) < (1 << kBinIndexBits));
+// most 7 (a 9-gon fanned) and a Sierpinski split 4 of each, so 17 bits of index hold a chunk
+// of 4096 inputs; 15 bits of chunk allow 134 M input triangles.
+inline constexpr int kBinIndexBits = 17;
+static_assert((limits::kTrianglesPerChunk * 7 * 4) < (1 << kBinIndexBits));
 inline constexpr uint32_t bin_entry(uint32_t chunk, uint32_t index) {
   return (chunk << kBinIndexBits) | index;
 }

@@ -11,9 +11,10 @@ namespace {
 
 bool covers_centre(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int px, int py) {
   const int64_t x = pixel_centre_fx(px), y = pixel_centre_fx(py);
-  return make_edge(b.x_fx, b.y_fx, c.x_fx, c.y_fx).covers(x, y) &&
-         make_edge(c.x_fx, c.y_fx, a.x_fx, a.y_fx).covers(x, y) &&
-         make_edge(a.x_fx, a.y_fx, b.x_fx, b.y_fx).covers(x, y);
+  auto edge = [](const ScreenVertex& p, const ScreenVertex& q) {  // doubled coordinates
+    return make_edge(2 * int64_t(p.x_fx), 2 * int64_t(p.y_fx), 2 * int64_t(q.x_fx), 2 * int64_t(q.y_fx));
+  };
+  return edge(b, c).covers(x, y) && edge(c, a).covers(x, y) && edge(a, b).covers(x, y);
 }
 
 class ChunkBuilder {
@@ -70,6 +71,33 @@ class ChunkBuilder {
     t.px_max[1] = static_cast<int16_t>(py1);
     t.material = material;
     t.flags = back_facing ? kBackFacing : 0;
+    if (p_.sierpinski && std::max(px1 - px0, py1 - py0) + 1 >= limits::kSierpinskiMinPx) split_sierpinski();
+  }
+
+  // Replaces the triangle just emitted by its four Sierpinski parts (frame/edge_function.h):
+  // each part is its own bin entry, so the parts of a large triangle are drawn as separate
+  // tasks, possibly by different workers. Their coverage is exactly the parent's.
+  void split_sierpinski() {
+    const SetupTriangle parent = chunk_.triangles.back();
+    chunk_.triangles.pop_back();
+    const int64_t unit = kEdgeUnitsPerPixel, half = unit / 2;
+    for (int part = 1; part <= 4; ++part) {
+      int64_t x[3], y[3];
+      SetupTriangle t = parent;
+      t.flags = static_cast<uint16_t>(parent.flags | (part << kSierpinskiShift));
+      sierpinski_corners(parent, part, x, y);
+      // Pixel centres inside the part's box (doubled coordinates), within the parent's box.
+      const int64_t x_lo = std::min({x[0], x[1], x[2]}) - half, x_hi = std::max({x[0], x[1], x[2]}) - half;
+      const int64_t y_lo = std::min({y[0], y[1], y[2]}) - half, y_hi = std::max({y[0], y[1], y[2]}) - half;
+      const int px0 = std::max<int>(static_cast<int>((x_lo + unit - 1) >> (limits::kSubpixelBits + 1)), parent.px_min[0]);
+      const int py0 = std::max<int>(static_cast<int>((y_lo + unit - 1) >> (limits::kSubpixelBits + 1)), parent.px_min[1]);
+      const int px1 = std::min<int>(static_cast<int>(x_hi >> (limits::kSubpixelBits + 1)), parent.px_max[0]);
+      const int py1 = std::min<int>(static_cast<int>(y_hi >> (limits::kSubpixelBits + 1)), parent.px_max[1]);
+      if (px0 > px1 || py0 > py1) continue;
+      t.px_min[0] = static_cast<int16_t>(px0), t.px_min[1] = static_cast<int16_t>(py0);
+      t.px_max[0] = static_cast<int16_t>(px1), t.px_max[1] = static_cast<int16_t>(py1);
+      chunk_.triangles.push_back(t);
+    }
   }
 
   // Clips against near, far and the guard band, then fans the polygon (keeping its winding).

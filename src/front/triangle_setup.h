@@ -15,6 +15,7 @@ struct SetupParams {
   Viewport viewport;
   Cull cull = Cull::None;
   bool with_attrs = false;  // clipping interpolates attributes only if the method reads them
+  bool sierpinski = false;  // split large triangles into their four Sierpinski parts
 };
 
 // Triangles [first, last) of the scene into `chunk` (cleared first, capacity kept).

@@ -14,7 +14,8 @@ struct Plane {
   float v0, gx, gy, lo, hi;
 };
 
-// Screen-space barycentric gradients of one triangle, exact from the integer edge functions.
+// Screen-space barycentric gradients of one triangle, exact from the integer edge functions
+// of its whole shape (shape_edges: a Sierpinski part interpolates over its parent).
 struct Barycentrics {
   int ax, ay;               // anchor pixel: the bounding box's first pixel centre
   double at_anchor[3];      // lambda_k at the anchor
@@ -23,14 +24,17 @@ struct Barycentrics {
 
 inline Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te) {
   Barycentrics b;
-  b.ax = t.px_min[0];
-  b.ay = t.px_min[1];
-  const double inv_area = 1.0 / static_cast<double>(doubled_area(t));
+  // The anchor: the first pixel centre of the whole triangle's box (as triangle setup bounds
+  // it), so that the parts of a split triangle evaluate their parent's planes bit for bit.
+  const int32_t half = limits::kSubpixelOne / 2, round_up = limits::kSubpixelOne - 1;
+  b.ax = std::max((std::min({t.x_fx[0], t.x_fx[1], t.x_fx[2]}) - half + round_up) >> limits::kSubpixelBits, 0);
+  b.ay = std::max((std::min({t.y_fx[0], t.y_fx[1], t.y_fx[2]}) - half + round_up) >> limits::kSubpixelBits, 0);
+  const double inv_area = 1.0 / (4.0 * static_cast<double>(doubled_area(t)));  // edge units
   const int64_t x = pixel_centre_fx(b.ax), y = pixel_centre_fx(b.ay);
   for (int k = 0; k < 3; ++k) {
     b.at_anchor[k] = static_cast<double>(te.e[k].at(x, y)) * inv_area;
-    b.d_dx[k] = static_cast<double>(te.e[k].a * limits::kSubpixelOne) * inv_area;
-    b.d_dy[k] = static_cast<double>(te.e[k].b * limits::kSubpixelOne) * inv_area;
+    b.d_dx[k] = static_cast<double>(te.e[k].a * kEdgeUnitsPerPixel) * inv_area;
+    b.d_dy[k] = static_cast<double>(te.e[k].b * kEdgeUnitsPerPixel) * inv_area;
   }
   return b;
 }

@@ -106,8 +106,8 @@ inline void for_each_row_mask(const TriangleEdges& te, const PixelRect& rect, Ro
   int64_t e_row[3], step_x[3], step_y[3];
   for (int k = 0; k < 3; ++k) {
     e_row[k] = te.e[k].at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0));
-    step_x[k] = te.e[k].a * limits::kSubpixelOne;
-    step_y[k] = te.e[k].b * limits::kSubpixelOne;
+    step_x[k] = te.e[k].a * kEdgeUnitsPerPixel;
+    step_y[k] = te.e[k].b * kEdgeUnitsPerPixel;
   }
   for (int py = rect.y0; py <= rect.y1; ++py) {
     uint32_t covered = 0;
@@ -141,7 +141,7 @@ inline void for_each_span(const TriangleEdges& te, const PixelRect& rect, SpanFn
   for (int k = 0; k < 3; ++k) {
     const Edge& e = te.e[k];
     bound[k].init(e.at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0)),
-                  e.a * limits::kSubpixelOne, e.b * limits::kSubpixelOne, e.threshold);
+                  e.a * kEdgeUnitsPerPixel, e.b * kEdgeUnitsPerPixel, e.threshold);
   }
   for (int py = rect.y0; py <= rect.y1; ++py) {
     int64_t lo = 0, hi = width;

@@ -12,7 +12,7 @@ namespace fastshade {
 
 struct TriangleInTile {
   const SetupTriangle* tri;
-  TriangleEdges edges;
+  TriangleEdges edges;  // coverage: the triangle or its Sierpinski part
   PixelRect rect;  // bounding box ∩ tile
   // Barycentric gradients and the depth plane exist only once a span is found: a small
   // triangle's box often holds pixel centres it does not cover.
@@ -22,7 +22,7 @@ struct TriangleInTile {
 
   void set_up_planes() {
     if (has_planes) return;
-    bary = barycentrics(*tri, edges);
+    bary = barycentrics(*tri, sierpinski_part(*tri) ? shape_edges(*tri) : edges);
     depth = make_plane(bary, tri->depth[0], tri->depth[1], tri->depth[2]);
     has_planes = true;
   }

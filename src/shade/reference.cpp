@@ -22,7 +22,8 @@ void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     n_view[i] = glm::dvec3(frame.vertex(entry, t.attr[i], &AttrArrays::n_view)) * flip;
     if (k.local_viewer) pos_view[i] = glm::dvec3(frame.vertex(entry, t.attr[i], &AttrArrays::pos_view));
   }
-  const double inv_area = 1.0 / static_cast<double>(doubled_area(t));
+  const double inv_area = 1.0 / (4.0 * static_cast<double>(doubled_area(t)));  // edge units
+  const TriangleEdges shape = shape_edges(t);  // a Sierpinski part interpolates its parent
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
     tri.set_up_planes();
     float* depth = tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin;
@@ -33,7 +34,7 @@ void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
       depth[px] = z;
       double mu[3], mu_sum = 0;
       for (int i = 0; i < 3; ++i) {
-        const int64_t e = tri.edges.e[i].at(pixel_centre_fx(px), pixel_centre_fx(py));
+        const int64_t e = shape.e[i].at(pixel_centre_fx(px), pixel_centre_fx(py));
         mu[i] = static_cast<double>(e) * inv_area * static_cast<double>(t.inv_w[i]);
         mu_sum += mu[i];
       }

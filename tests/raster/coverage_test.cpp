@@ -101,6 +101,27 @@ TEST(Coverage, RandomSubPixelTriangulationsCoverEveryPixelOnce) {
   }
 }
 
+// Sierpinski parts (midpoints on the ninth sub-pixel bit) cover exactly their parent: the same
+// pixels, once, for random large triangles and for a mesh of large shared-edge triangles.
+TEST(Coverage, SierpinskiPartsCoverExactlyTheirParent) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(-30.0, 290.0);
+  const int w = 256, h = 192;
+  for (int n = 0; n < 60; ++n) {
+    const Tri t = {screen_to_clip(u(rng) + 0.37, u(rng) * 0.75 + 0.11, w, h),
+                   screen_to_clip(u(rng) + 0.61, u(rng) * 0.75 + 0.93, w, h),
+                   screen_to_clip(u(rng) + 0.05, u(rng) * 0.75 + 0.49, w, h)};
+    const CoverageResult whole = rasterize_clip_triangles({t}, w, h, 16);
+    const CoverageResult parts = rasterize_clip_triangles({t}, w, h, 16, 64, Cull::None, true);
+    ASSERT_EQ(parts.hits, whole.hits) << "triangle " << n;
+  }
+  std::mt19937 rng2(32);
+  const auto mesh = grid_mesh(w, h, 4, 3, 0.5, 0.2 * 64, rng2, true, true);
+  const CoverageResult split = rasterize_clip_triangles(mesh, w, h, 32, 64, Cull::None, true);
+  EXPECT_GT(split.drawn, static_cast<long long>(mesh.size()) * 3) << "the triangles were not split";
+  expect_exactly_once(split, "sierpinski mesh");
+}
+
 TEST(Coverage, DegenerateAndNonFiniteTrianglesAreDroppedNotDrawn) {
   const int w = 64, h = 64;
   const glm::vec4 a = screen_to_clip(10, 10, w, h), b = screen_to_clip(50, 10, w, h);

@@ -35,7 +35,8 @@ inline void count_hits(const Frame& frame, uint32_t entry, const TileTarget& tt)
 // Each triangle is three clip-space positions; chunks of `per_chunk` triangles.
 inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm::vec4, 3>>& tris,
                                                int width, int height, int tile_px,
-                                               int per_chunk = 64, Cull cull = Cull::None) {
+                                               int per_chunk = 64, Cull cull = Cull::None,
+                                               bool sierpinski = false) {
   SceneGeometry g;
   for (std::size_t n = 0; n < tris.size(); ++n) {
     const uint32_t base = static_cast<uint32_t>(g.positions.size());
@@ -57,7 +58,7 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
   frame.grid.tiles_x = (width + tile_px - 1) / tile_px;
   frame.grid.tiles_y = (height + tile_px - 1) / tile_px;
   frame.shade.background = glm::vec3(0);
-  const SetupParams params{viewport, cull, false};
+  const SetupParams params{viewport, cull, false, sierpinski};
   const uint32_t n = static_cast<uint32_t>(tris.size());
   frame.chunks.resize((n + per_chunk - 1) / per_chunk);
   CoverageResult out;
