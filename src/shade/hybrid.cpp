@@ -117,45 +117,26 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
-  const SetupTriangle& whole = frame.triangle(entry);
-  if (whole.px_max[0] - whole.px_min[0] + 1 < kHybridMinWidthPx) {
-    DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
-    return;
-  }
-  TriangleInTile tri;
-  if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
-  const SetupTriangle& t = *tri.tri;
   const ShadeConstants& k = frame.shade;
-  PhongSpanInput in;
-  in.material = &k.materials[t.material];
-  in.shade = &k;
-  bool ready = false;
   int step = 1;
-  auto set_up = [&] {
-    in.bary = tri.bary;
-    in.depth = tri.depth;
-    set_up_phong_planes<kLocal>(frame, entry, t, tri.bary, in);
-    TriangleNormals normals;
-    const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
-    normals.centre_view = glm::vec3(0.0f);
-    for (int i = 0; i < 3; ++i) {
-      normals.n[i] = flip * frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
-      normals.inv_w[i] = t.inv_w[i];
-      if constexpr (kLocal) normals.centre_view += frame.vertex(entry, t.attr[i], &AttrArrays::pos_view) / 3.0f;
-    }
-    step = hybrid_triangle_step(in, normals, k.hybrid_tolerance);
-    ready = true;
-  };
-  // Rows through the whole triangle (tile rows only): a row's covered run decides its
-  // segment ends, whatever tile this is.
-  const PixelRect rows{t.px_min[0], tri.rect.y0, t.px_max[0], tri.rect.y1};
-  for_each_span(tri.edges, rows, [&](int py, int xl, int xr) {
-    const int x0 = std::max(xl, tri.rect.x0), x1 = std::min(xr, tri.rect.x1);
-    if (x0 > x1) return;
-    tri.set_up_planes();
-    if (!ready) set_up();
-    HybridSpanImpl<kLocal, kSrgb, kBrdf>(in, {step, xl, xr}, py, x0, x1, tile_row(tt, py));
-  });
+  DrawByRowRuns<kLocal, kSrgb, kBrdf>(
+      frame, entry, tt, kHybridMinWidthPx,
+      [&](const PhongSpanInput& in) {
+        const SetupTriangle& t = frame.triangle(entry);
+        TriangleNormals normals;
+        const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
+        normals.centre_view = glm::vec3(0.0f);
+        for (int i = 0; i < 3; ++i) {
+          normals.n[i] = flip * frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
+          normals.inv_w[i] = t.inv_w[i];
+          if constexpr (kLocal)
+            normals.centre_view += frame.vertex(entry, t.attr[i], &AttrArrays::pos_view) / 3.0f;
+        }
+        step = hybrid_triangle_step(in, normals, k.hybrid_tolerance);
+      },
+      [&](const PhongSpanInput& in, int xl, int xr, int py, int x0, int x1, RowTarget row) {
+        HybridSpanImpl<kLocal, kSrgb, kBrdf>(in, {step, xl, xr}, py, x0, x1, row);
+      });
 }
 
 using HybridSpanFn = void (*)(const PhongSpanInput&, const HybridRun&, int, int, int, RowTarget);

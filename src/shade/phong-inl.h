@@ -7,6 +7,8 @@
 #define FASTSHADE_SHADE_PHONG_INL_H_
 #endif
 
+#include <algorithm>
+
 #include <hwy/highway.h>
 
 #include "shade/brdf-inl.h"
@@ -138,6 +140,42 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
     if (!ready) set_up();
     return PhongShade<kLocal, kSrgb, kBrdf>(d, in, o);
+  });
+}
+
+// The frame of the span-run methods (hybrid, --normals): triangles narrower than min_width_px
+// (whole box: every tile decides alike) take per-pixel Phong; the others walk rows through the
+// whole triangle, tile rows only, because a row's covered run [xl, xr] fixes where segment or
+// block ends go, whatever tile this is. on_setup(in) runs once, when the first run is found
+// (planes are ready then); run(in, xl, xr, py, x0, x1, row) shades the tile's part [x0, x1].
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, typename OnSetup, typename Run>
+HWY_INLINE void DrawByRowRuns(const Frame& frame, uint32_t entry, const TileTarget& tt,
+                              int min_width_px, OnSetup&& on_setup, Run&& run) {
+  const SetupTriangle& whole = frame.triangle(entry);
+  if (whole.px_max[0] - whole.px_min[0] + 1 < min_width_px) {
+    DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
+    return;
+  }
+  TriangleInTile tri;
+  if (!prepare_triangle(whole, tt.rect, tri)) return;
+  const ShadeConstants& k = frame.shade;
+  PhongSpanInput in;
+  in.material = &k.materials[whole.material];
+  in.shade = &k;
+  bool ready = false;
+  const PixelRect rows{whole.px_min[0], tri.rect.y0, whole.px_max[0], tri.rect.y1};
+  for_each_span(tri.edges, rows, [&](int py, int xl, int xr) {
+    const int x0 = std::max(xl, tri.rect.x0), x1 = std::min(xr, tri.rect.x1);
+    if (x0 > x1) return;
+    tri.set_up_planes();
+    if (!ready) {
+      in.bary = tri.bary;
+      in.depth = tri.depth;
+      set_up_phong_planes<kLocal>(frame, entry, whole, tri.bary, in);
+      on_setup(in);
+      ready = true;
+    }
+    run(in, xl, xr, py, x0, x1, tile_row(tt, py));
   });
 }
 

@@ -56,33 +56,13 @@ void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, cons
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void DrawPhongNormals(const Frame& frame, uint32_t entry, const TileTarget& tt) {
-  const SetupTriangle& whole = frame.triangle(entry);
-  if (whole.px_max[0] - whole.px_min[0] + 1 < kBlockNormalsMinWidthPx) {
-    DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
-    return;
-  }
-  TriangleInTile tri;
-  if (!prepare_triangle(whole, tt.rect, tri)) return;
   const ShadeConstants& k = frame.shade;
-  PhongSpanInput in;
-  in.material = &k.materials[whole.material];
-  in.shade = &k;
-  bool ready = false;
-  // Rows through the whole triangle (tile rows only): the covered run fixes the block ends.
-  const PixelRect rows{whole.px_min[0], tri.rect.y0, whole.px_max[0], tri.rect.y1};
-  for_each_span(tri.edges, rows, [&](int py, int xl, int xr) {
-    const int x0 = std::max(xl, tri.rect.x0), x1 = std::min(xr, tri.rect.x1);
-    if (x0 > x1) return;
-    tri.set_up_planes();
-    if (!ready) {
-      in.bary = tri.bary;
-      in.depth = tri.depth;
-      set_up_phong_planes<kLocal>(frame, entry, whole, tri.bary, in);
-      ready = true;
-    }
-    NormalsSpanImpl<kLocal, kSrgb, kBrdf>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0, x1,
-                                          tile_row(tt, py));
-  });
+  DrawByRowRuns<kLocal, kSrgb, kBrdf>(
+      frame, entry, tt, kBlockNormalsMinWidthPx, [](const PhongSpanInput&) {},
+      [&](const PhongSpanInput& in, int xl, int xr, int py, int x0, int x1, RowTarget row) {
+        NormalsSpanImpl<kLocal, kSrgb, kBrdf>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0,
+                                              x1, row);
+      });
 }
 
 using NormalsSpanFn = void (*)(const PhongSpanInput&, SpanNormals, float, const HybridRun&, int, int,
