@@ -144,23 +144,35 @@ TEST_F(SpanKernels, PhongMatchesScalarReferenceOnEveryIsaBrdfAndViewer) {
   }
 }
 
+// One white light near the view axis and a mid-shininess material; random triangles with
+// normal components in [min_xy, 1] (x, y) and [min_z, 1] (z).
+struct OneLight {
+  ShadeConstants k;
+  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(BrdfChoice{}, 40.0)};
+  OneLight() {
+    k.ambient = glm::vec3(0.05f);
+    k.lights.push_back({glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0), glm::vec3(1.0f)});
+    k.lights[0].h_view = glm::normalize(k.lights[0].l_view + glm::vec3(0, 0, 1));
+  }
+  PhongSpanInput random_input(std::mt19937& rng, float min_xy, float min_z) const {
+    const Fixture f = random_triangle(rng);
+    PhongSpanInput in;
+    in.bary = f.bary;
+    in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
+    for (int c = 0; c < 3; ++c) in.n[c] = random_plane(f, rng, c == 2 ? min_z : min_xy, 1.0f);
+    in.material = &m;
+    in.shade = &k;
+    return in;
+  }
+};
+
 TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
   std::mt19937 rng(13);
-  ShadeConstants k;
-  k.ambient = glm::vec3(0.05f);
-  k.lights.push_back({glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0), glm::vec3(1.0f)});
-  k.lights[0].h_view = glm::normalize(k.lights[0].l_view + glm::vec3(0, 0, 1));
-  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(BrdfChoice{}, 40.0)};
+  const OneLight scene;
   for (const std::string& isa : available_isas()) {
     select_isa(isa);
     for (int step : {1, 2, 4, 8, 16}) {
-      const Fixture f = random_triangle(rng);
-      PhongSpanInput in;
-      in.bary = f.bary;
-      in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
-      for (int c = 0; c < 3; ++c) in.n[c] = random_plane(f, rng, c == 2 ? 0.5f : -0.5f, 1.0f);
-      in.material = &m;
-      in.shade = &k;
+      const PhongSpanInput in = scene.random_input(rng, -0.5f, 0.5f);
       const HybridRun run{step, 145, 190};  // the row's run starts and ends off the blocks
       expect_same("hybrid " + isa + " step " + std::to_string(step), rng, 1,
                   [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
@@ -171,22 +183,12 @@ TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
 
 TEST_F(SpanKernels, NormalsPathsMatchScalarReferenceOnEveryIsa) {
   std::mt19937 rng(14);
-  ShadeConstants k;
-  k.ambient = glm::vec3(0.05f);
-  k.lights.push_back({glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0), glm::vec3(1.0f)});
-  k.lights[0].h_view = glm::normalize(k.lights[0].l_view + glm::vec3(0, 0, 1));
-  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(BrdfChoice{}, 40.0)};
+  const OneLight scene;
   for (const std::string& isa : available_isas()) {
     select_isa(isa);
     for (SpanNormals mode : {SpanNormals::Adaptive, SpanNormals::EqualAngle})
       for (float tol : {0.0f, hybrid_tolerance(2.0)}) {
-        const Fixture f = random_triangle(rng);
-        PhongSpanInput in;
-        in.bary = f.bary;
-        in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
-        for (int c = 0; c < 3; ++c) in.n[c] = random_plane(f, rng, c == 2 ? 0.3f : -0.8f, 1.0f);
-        in.material = &m;
-        in.shade = &k;
+        const PhongSpanInput in = scene.random_input(rng, -0.8f, 0.3f);
         const HybridRun run{1, 145, 190};
         expect_same("normals " + isa, rng, 1,
                     [&](RowTarget r, int x0, int x1) { normals_span(in, mode, tol, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
