@@ -27,7 +27,6 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
                     RowTarget row) {
   const hn::ScalableTag<float> d;
   const hn::RebindToSigned<decltype(d)> di;
-  const hn::RebindToUnsigned<decltype(d)> du;
   const int lanes = static_cast<int>(hn::Lanes(d));
   constexpr int kBlock = limits::kSeedBlockPx;
   constexpr int kMaxBlocks = limits::kMaxTilePx / kBlock + 1;
@@ -67,13 +66,8 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
       continue;
     }
     const int shift = std::countr_zero(static_cast<unsigned>(step));
-    for (int x = lo; x <= hi; x += lanes) {
+    ShadeSpanAt(d, in.bary, in.depth, py, lo, hi, row, [&](auto, const auto&, int x) {
       const auto xi = hn::Add(hn::Set(di, x), iota);
-      const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, hi + 1)));
-      const auto o = MakeLaneOffsets(d, in.bary, xi, dy);
-      const auto z = EvalPlane(d, in.depth, o);
-      const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
-      if (hn::AllFalse(d, pass)) continue;
       // Lanes past hi are clamped into the block: their ends stay inside the arrays.
       const auto i = hn::Min(hn::Sub(xi, hn::Set(di, xb)), hn::Set(di, kBlock - 1));
       const auto j0 = hn::ShiftRightSame(i, shift);
@@ -108,10 +102,8 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
       const auto t = hn::IfThenElseZero(hn::Gt(len, hn::Zero(d)),
                                         hn::Div(hn::ConvertTo(d, hn::Sub(xi, ea)), hn::Max(len, hn::Set(d, 1.0f))));
       auto lerp = [&](const auto& a, const auto& b) { return hn::Add(a, hn::Mul(t, hn::Sub(b, a))); };
-      const auto rgba = PackRGBA<kSrgb>(d, lerp(ra, rb), lerp(ga, gb), lerp(ba, bb));
-      hn::BlendedStore(z, pass, d, row.depth + x);
-      hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
-    }
+      return PackRGBA<kSrgb>(d, lerp(ra, rb), lerp(ga, gb), lerp(ba, bb));
+    });
   }
 }
 

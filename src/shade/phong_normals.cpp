@@ -25,32 +25,19 @@ template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
                      int py, int x0, int x1, RowTarget row) {
   const hn::ScalableTag<float> d;
-  const hn::RebindToSigned<decltype(d)> di;
-  const hn::RebindToUnsigned<decltype(d)> du;
-  const int lanes = static_cast<int>(hn::Lanes(d));
   constexpr int kBlock = limits::kSeedBlockPx;
-  const auto iota = hn::Iota(di, 0);
-  const auto dy = hn::Set(d, static_cast<float>(py - in.bary.ay));
   NormalBlock nb;
   for (int xb = x0 & ~(kBlock - 1); xb <= x1; xb += kBlock) {
     make_normal_block(in, mode, tol, xb, py, run.xl, run.xr, nb);
     const int lo = std::max(xb, x0), hi = std::min(xb + kBlock - 1, x1);
-    for (int x = lo; x <= hi; x += lanes) {
-      const auto xi = hn::Add(hn::Set(di, x), iota);
-      const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, hi + 1)));
-      const auto o = MakeLaneOffsets(d, in.bary, xi, dy);
-      const auto z = EvalPlane(d, in.depth, o);
-      const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
-      if (hn::AllFalse(d, pass)) continue;
+    ShadeSpanAt(d, in.bary, in.depth, py, lo, hi, row, [&](auto, const auto& o, int x) {
       const auto alpha = hn::LoadU(d, nb.alpha + (x - xb)), beta = hn::LoadU(d, nb.beta + (x - xb));
       auto mix = [&](int c) {
         return hn::Add(hn::Mul(alpha, hn::Set(d, nb.na[c])), hn::Mul(beta, hn::Set(d, nb.nz[c])));
       };
       const auto c = PhongColorFromNormal<kLocal, kBrdf>(d, in, mix(0), mix(1), mix(2), o);
-      const auto rgba = PackRGBA<kSrgb>(d, c.r, c.g, c.b);
-      hn::BlendedStore(z, pass, d, row.depth + x);
-      hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
-    }
+      return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+    });
   }
 }
 

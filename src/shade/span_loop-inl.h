@@ -73,11 +73,11 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
 }
 
 // Walks one covered row span a vector at a time: depth test against the tile, then
-// shade(d, offsets) for vectors with a lane that passes, then blended stores of colour and
-// depth.
+// shade(d, offsets, x) for vectors with a lane that passes (x: the vector's first pixel),
+// then blended stores of colour and depth.
 template <class D, typename ShadeFn>
-HWY_INLINE void ShadeSpanWith(D d, const Barycentrics& bary, const Plane& depth_plane, int py,
-                              int x0, int x1, RowTarget row, ShadeFn&& shade) {
+HWY_INLINE void ShadeSpanAt(D d, const Barycentrics& bary, const Plane& depth_plane, int py,
+                            int x0, int x1, RowTarget row, ShadeFn&& shade) {
   const hn::RebindToSigned<D> di;
   const hn::RebindToUnsigned<D> du;
   const int lanes = static_cast<int>(hn::Lanes(d));
@@ -90,10 +90,18 @@ HWY_INLINE void ShadeSpanWith(D d, const Barycentrics& bary, const Plane& depth_
     const auto z = EvalPlane(d, depth_plane, o);
     const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
     if (hn::AllFalse(d, pass)) continue;
-    const auto rgba = shade(d, o);
+    const auto rgba = shade(d, o, x);
     hn::BlendedStore(z, pass, d, row.depth + x);
     hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
   }
+}
+
+// The same for shaders that need only the lanes' offsets: shade(d, offsets).
+template <class D, typename ShadeFn>
+HWY_INLINE void ShadeSpanWith(D d, const Barycentrics& bary, const Plane& depth_plane, int py,
+                              int x0, int x1, RowTarget row, ShadeFn&& shade) {
+  ShadeSpanAt(d, bary, depth_plane, py, x0, x1, row,
+              [&](auto dd, const auto& o, int) { return shade(dd, o); });
 }
 
 // Short spans (the many small triangles of a dense mesh) take vectors of 4 or 8 lanes: wider
