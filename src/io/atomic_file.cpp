@@ -11,6 +11,9 @@
 namespace fastshade {
 namespace fs = std::filesystem;
 
+namespace {
+
+// ".NAME.tmp<pid>.<n>EXT": unique within and across processes.
 fs::path temp_path_for(const fs::path& target) {
   static std::atomic<unsigned long> counter{0};
   // Built by append: "." + std::string&& trips GCC 12's false -Wrestrict (GCC bug 105651).
@@ -24,6 +27,8 @@ fs::path temp_path_for(const fs::path& target) {
   const fs::path dir = target.parent_path();
   return (dir.empty() ? fs::path(".") : dir) / name;
 }
+
+}  // namespace
 
 TempFile::TempFile(const fs::path& target) : path_(temp_path_for(target)), target_(target) {}
 

@@ -5,11 +5,9 @@
 
 namespace fastshade {
 
-// ".NAME.tmp<pid>.<n>EXT" beside the target: hidden, unique within and across processes, and
-// ending in the real extension so format-sniffing writers (OpenImageIO) pick the same format.
-std::filesystem::path temp_path_for(const std::filesystem::path& target);
-
-// Removes the temporary file unless committed: every failure path, exceptions included.
+// A hidden temporary file beside the target, ending in the target's extension (so format-
+// sniffing writers such as OpenImageIO pick the same format); removed unless committed: every
+// failure path, exceptions included.
 class TempFile {
  public:
   explicit TempFile(const std::filesystem::path& target);
