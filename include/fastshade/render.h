@@ -13,13 +13,17 @@ namespace fastshade {
 struct RenderOptions {
   int threads = 0;         // 0 = all hardware threads
   int tile_px = 64;        // power of two in [kMinTilePx, kMaxTilePx]
-  std::string method = "phong";
+  std::string method = "auto";
   bool srgb = false;       // encode with the sRGB curve before quantising
   std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: a process-wide choice
   std::string brdf = "exact";  // specular approximation (docs/KERNELS.md)
-  double max_error = 1.0;      // hybrid, --normals adaptive: error budget in 8-bit steps (LSB)
+  double max_error = 1.0;  // auto, hybrid, --normals adaptive: error budget in 8-bit steps (LSB)
   std::string normals = "normalize";  // phong: normalize | adaptive | equal-angle
   std::string gouraud = "increments";  // gouraud: increments | sierpinski (split large triangles)
+  // auto: a triangle whose specular term stays below this (colour units) gets no specular work
+  double spec_threshold = 1.0 / 510.0;
+  std::string spec_method = "hybrid";  // auto: the kernel of triangles that may show a highlight
+  std::string classifier = "bound";    // auto: bound (error-checked) | paper (the literal rule)
   std::string to_string() const;
 };
 
@@ -36,6 +40,13 @@ struct StageTimes {  // milliseconds
   double front_end = 0, binning = 0, raster_shade = 0, total = 0;
 };
 
+// One shading path of a classifying method: triangles sent down it (input triangles, by the
+// classifier) and pixels it drew that stayed visible.
+struct PathStats {
+  std::string name;
+  long long triangles = 0, pixels = 0;
+};
+
 struct RenderStats {
   long long triangles_in = 0;       // in the scene's meshes
   long long triangles_drawn = 0;    // binned (after clipping; a clipped triangle may count more)
@@ -45,6 +56,8 @@ struct RenderStats {
   long long covered_pixels = 0;     // pixels any triangle covers (after depth, counted once)
   int threads = 0, tile = 0;
   std::string isa, method;
+  std::vector<PathStats> paths;        // classifying methods only
+  std::vector<std::string> left_out;   // what the frame skipped because the scene needs none of it
   StageTimes median;  // median over timed frames
   int frames = 0;
   double mpix_per_s() const;  // covered pixels / total time

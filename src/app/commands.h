@@ -11,6 +11,7 @@ struct RenderCommand {
   std::string output;
   std::string stats_path;
   int frames = 1;
+  bool explain = false;  // print the classifier's plan and what was left out
   RenderOptions options;
 };
 int run_render(const RenderCommand& cmd);

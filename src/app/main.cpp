@@ -27,11 +27,18 @@ int main(int argc, char** argv) {
   r->add_option("--isa", render.options.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
   r->add_flag("--srgb", render.options.srgb, "encode with the sRGB curve (default: linear)");
   r->add_option("--max-error", render.options.max_error,
-                "hybrid: error budget in 8-bit steps (default 1)");
+                "auto, hybrid, --normals adaptive: error budget in 8-bit steps (default 1)");
   r->add_option("--gouraud", render.options.gouraud,
                 "gouraud: increments, or sierpinski (large triangles split at edge midpoints)");
   r->add_option("--normals", render.options.normals,
                 "phong: per-pixel normals by normalize, adaptive (eq. 6) or equal-angle (eq. 7)");
+  r->add_option("--spec-threshold", render.options.spec_threshold,
+                "auto: largest specular term (colour units) a triangle may leave out (default 1/510)");
+  r->add_option("--spec-method", render.options.spec_method,
+                "auto: kernel for triangles that may show a highlight: hybrid (default) or phong");
+  r->add_option("--classifier", render.options.classifier,
+                "auto: bound (error-checked, default) or paper (highlight -> specular, rest -> Gouraud)");
+  r->add_flag("--explain", render.explain, "print the shading plan: paths, and what was left out");
   r->add_option("--brdf", render.options.brdf,
                 "specular lobe: exact, cosk:K, schlick, schlick-pow2, quadratic, quadratic-fit, "
                 "poly2, poly3 (docs/KERNELS.md)");

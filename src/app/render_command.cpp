@@ -13,6 +13,8 @@ namespace fastshade {
 namespace {
 
 nlohmann::json stats_json(const RenderStats& s) {
+  nlohmann::json paths = nlohmann::json::object();
+  for (const PathStats& p : s.paths) paths[p.name] = {{"triangles", p.triangles}, {"pixels", p.pixels}};
   return {{"triangles_in", s.triangles_in},
           {"triangles_drawn", s.triangles_drawn},
           {"triangles_dropped", s.triangles_dropped},
@@ -31,7 +33,22 @@ nlohmann::json stats_json(const RenderStats& s) {
             {"raster_shade", s.median.raster_shade},
             {"total", s.median.total}}},
           {"mpix_per_s", s.mpix_per_s()},
-          {"mtri_per_s", s.mtri_per_s()}};
+          {"mtri_per_s", s.mtri_per_s()},
+          {"paths", paths},
+          {"left_out", s.left_out}};
+}
+
+// --explain: the plan in a few lines, on stdout after the summary.
+void print_explanation(const RenderStats& s, const RenderOptions& o) {
+  std::printf("plan: method %s (%s)\n", s.method.c_str(), o.to_string().c_str());
+  long long tris = 0, pixels = 0;
+  for (const PathStats& p : s.paths) tris += p.triangles, pixels += p.pixels;
+  for (const PathStats& p : s.paths)
+    std::printf("  %-16s %9lld triangles (%5.1f %%) %10lld visible pixels (%5.1f %%)\n", p.name.c_str(),
+                p.triangles, tris ? 100.0 * p.triangles / tris : 0.0, p.pixels,
+                pixels ? 100.0 * p.pixels / pixels : 0.0);
+  if (!s.left_out.empty()) std::printf("left out:\n");
+  for (const std::string& line : s.left_out) std::printf("  - %s\n", line.c_str());
 }
 
 }  // namespace
@@ -62,6 +79,7 @@ int run_render(const RenderCommand& cmd) {
       stats.median.binning, stats.median.raster_shade,
       stats.frames > 1 ? (" median of " + std::to_string(stats.frames)).c_str() : "",
       stats.mpix_per_s());
+  if (cmd.explain) print_explanation(stats, cmd.options);
   return 0;
 }
 

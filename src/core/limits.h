@@ -41,6 +41,13 @@ inline constexpr int kSierpinskiMinPx = 32;
 // (one counter per tile), small enough that 2 threads get many chunks on a 70k mesh.
 inline constexpr int kTrianglesPerChunk = 4096;
 
+// `auto`: what of --max-error the float kernels keep for their own rounding. The Gouraud
+// path's colour planes (c/w, 1/w in float, one division) err by a few 1e-7 relative, 1e-4 of
+// an 8-bit step; 0.01 LSB leaves two orders of magnitude, so that a triangle whose bound
+// error is below max_error - 0.01 LSB stays below max_error as drawn. Rounding both images
+// to 8 bits then differs by at most ceil(max_error) steps.
+inline constexpr double kAutoFloatReserveLsb = 0.01;
+
 // Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.
 inline constexpr double kMaxShininess = 1e6;
 

@@ -2,6 +2,7 @@
 // times. Implements include/fastshade/render.h.
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <sstream>
 
 #include <tbb/info.h>
@@ -9,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "exec/isa.h"
+#include "exec/left_out.h"
 #include "exec/tile_executor.h"
 #include "fastshade/error.h"
 #include "fastshade/render.h"
@@ -25,7 +27,11 @@ namespace fastshade {
 std::string RenderOptions::to_string() const {
   std::ostringstream s;
   s << "method=" << method << " threads=" << threads << " tile=" << tile_px << " isa=" << isa
-    << " srgb=" << (srgb ? "on" : "off");
+    << " srgb=" << (srgb ? "on" : "off") << " brdf=" << brdf << " max_error=" << max_error
+    << " normals=" << normals << " gouraud=" << gouraud;
+  if (method == "auto")
+    s << " spec_threshold=" << spec_threshold << " spec_method=" << spec_method
+      << " classifier=" << classifier;
   return s.str();
 }
 
@@ -51,6 +57,13 @@ void validate(const RenderOptions& o) {
     throw InputError("--gouraud", "sierpinski subtriangles apply to --method gouraud only");
   if (!(o.max_error >= 0 && o.max_error <= 255))
     throw InputError("--max-error", "expected 0 to 255 (8-bit steps), got " + std::to_string(o.max_error));
+  if (!method->classifies) {
+    const RenderOptions defaults;
+    for (const auto& [set, flag] : {std::pair{o.spec_threshold != defaults.spec_threshold, "--spec-threshold"},
+                                    std::pair{o.spec_method != defaults.spec_method, "--spec-method"},
+                                    std::pair{o.classifier != defaults.classifier, "--classifier"}})
+      if (set) throw InputError(flag, "applies to --method auto only");
+  }
   if (const std::string why = method->refuse(o); !why.empty()) {
     const std::size_t colon = why.find(": ");  // "--option: reason"
     throw InputError(why.substr(0, colon), why.substr(colon + 2));
@@ -96,7 +109,9 @@ struct Renderer::Impl {
   const Method* method;
   ViewTransform xf;
   AttrNeeds needs;
-  DrawTriangleFn draw;
+  TileDraw draw;
+  bool classified = false;
+  std::optional<Classifier> classifier;
   tbb::task_arena arena;
   Frame frame;
   ProjectedVertices vertices;
@@ -116,7 +131,14 @@ struct Renderer::Impl {
     frame.shade.hybrid_tolerance = hybrid_tolerance(o.max_error);
     frame.shade.normals = parse_normals(o.normals, "--normals");
     needs = method->needs(frame.shade);
-    draw = method->select(frame.shade);
+    draw = method->select(frame.shade, o);
+    // Without lights `auto` has nothing to classify (every colour is the ambient one).
+    classified = method->classifies && !frame.shade.lights.empty();
+    if (classified) {
+      classifier.emplace(frame.shade, ClassifierParams{o.spec_threshold, auto_gouraud_budget(o.max_error),
+                                                       o.classifier == "paper"});
+      setup.classifier = &*classifier;
+    }
     setup.viewport = make_viewport(scene.width, scene.height);
     setup.cull = scene.cull;
     setup.with_attrs = needs.normal || needs.color || needs.position;
@@ -138,6 +160,7 @@ struct Renderer::Impl {
     image.height = frame.grid.height;
     image.rgb.resize(std::size_t(image.width) * image.height * 3);
     StageTimes t;
+    BackEndCounts back_end;
     arena.execute([&] {
       const auto t0 = Clock::now();
       run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
@@ -151,7 +174,7 @@ struct Renderer::Impl {
 
       const auto t1 = Clock::now();
       tbb::parallel_for(std::size_t(0), frame.chunks.size(),
-                        [&](std::size_t c) { count_chunk_bins(frame.grid, frame.chunks[c]); });
+                        [&](std::size_t c) { count_chunk_bins(frame.grid, classified, frame.chunks[c]); });
       plan_bins(frame);
       tbb::parallel_for(std::size_t(0), frame.chunks.size(),
                         [&](std::size_t c) { fill_chunk_bins(frame, static_cast<uint32_t>(c)); });
@@ -161,15 +184,24 @@ struct Renderer::Impl {
       const BackEndCounts counts = executor.run(frame, draw, image);
       t.raster_shade = ms_since(t2);
       t.total = ms_since(t0);
-      stats.tiles_nonempty = counts.tiles_nonempty;
-      stats.covered_pixels = counts.covered_pixels;
+      back_end = counts;
     });
+    stats.tiles_nonempty = back_end.tiles_nonempty;
+    stats.covered_pixels = back_end.covered_pixels;
     stats.triangles_drawn = stats.triangles_dropped = stats.triangles_culled = 0;
+    PathTally tally;
     for (const Chunk& c : frame.chunks) {
       stats.triangles_drawn += static_cast<long long>(c.triangles.size());
       stats.triangles_dropped += c.dropped;
       stats.triangles_culled += c.culled;
+      tally.add(c.paths);
     }
+    stats.paths.clear();
+    if (classified)
+      for (int p = 1; p < kShadePathCount; ++p)
+        stats.paths.push_back({kShadePathNames[p], tally.triangles[p], back_end.path_pixels[p]});
+    stats.left_out = left_out_report(geometry, frame.shade, options,
+                                     {classified ? &tally : nullptr, back_end, stats.tiles_total, 0});
     if (times) *times = t;
     return image;
   }

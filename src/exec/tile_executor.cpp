@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cstring>
 #include <vector>
 
@@ -72,11 +73,13 @@ struct TileExecutor::Scratch {
 TileExecutor::TileExecutor() : scratch_(std::make_unique<Scratch>()) {}
 TileExecutor::~TileExecutor() = default;
 
-BackEndCounts TileExecutor::run(const Frame& frame, DrawTriangleFn draw, Image& image) {
+BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image& image) {
   const TileGrid& grid = frame.grid;
   const uint32_t background = background_rgba(frame.shade);
   const std::vector<uint8_t> background_rgb = background_row(background);
-  std::atomic<long long> nonempty{0}, covered{0};
+  const bool classified = !frame.tile_paths.empty();
+  std::atomic<long long> nonempty{0}, covered{0}, single_path{0};
+  std::atomic<long long> path_pixels[kShadePathCount] = {};
   // One tile per task, handed out dynamically: tile costs vary by orders of magnitude.
   tbb::parallel_for(
       tbb::blocked_range<int>(0, grid.tile_count(), 1),
@@ -98,27 +101,53 @@ BackEndCounts TileExecutor::run(const Frame& frame, DrawTriangleFn draw, Image& 
             std::fill_n(buffers.color.data() + y * stride, w, background);
             std::fill_n(buffers.depth.data() + y * stride, w, 1.0f);
           }
-          const TileTarget target{buffers.color.data(), buffers.depth.data(), stride, rect.x0,
-                                  rect.y0, rect};
+          TileTarget target{buffers.color.data(), buffers.depth.data(), stride, rect.x0,
+                            rect.y0, rect, draw.path};
+          // A tile whose triangles all take one path runs that path's kernel alone.
+          DrawTriangleFn tile_draw = draw.any;
+          if (classified) {
+            const unsigned paths = frame.tile_paths[tile];
+            const int only = std::countr_zero(paths);
+            if (std::has_single_bit(paths) && draw.path[only]) {
+              tile_draw = draw.path[only];
+              target.alpha_xor = path_alpha_xor(static_cast<ShadePath>(only));
+              single_path.fetch_add(1, std::memory_order_relaxed);
+            }
+          }
           for (uint32_t i = begin; i < end; ++i) {
             prefetch_ahead(frame, i, end);
-            draw(frame, frame.bin_entries[i], target);
+            tile_draw(frame, frame.bin_entries[i], target);
           }
           const int h = rect.y1 - rect.y0 + 1;
           rgba_rows_to_rgb(buffers.color.data(), stride,
                            image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                            image.width * 3, w, h);
           long long tile_covered = 0;
+          long long tile_paths[kShadePathCount] = {};
           for (int y = 0; y < h; ++y) {
             const float* depth = buffers.depth.data() + y * stride;
-            for (int x = 0; x < w; ++x) tile_covered += depth[x] < 1.0f;
+            const uint32_t* color = buffers.color.data() + y * stride;
+            for (int x = 0; x < w; ++x) {
+              const bool hit = depth[x] < 1.0f;
+              tile_covered += hit;
+              // Untagged pixels keep alpha 0xFF; path p's pixels carry p.
+              if (classified && hit && (color[x] >> 24) < kShadePathCount) ++tile_paths[color[x] >> 24];
+            }
           }
           nonempty.fetch_add(1, std::memory_order_relaxed);
           covered.fetch_add(tile_covered, std::memory_order_relaxed);
+          if (classified)
+            for (int p = 0; p < kShadePathCount; ++p)
+              path_pixels[p].fetch_add(tile_paths[p], std::memory_order_relaxed);
         }
       },
       tbb::simple_partitioner());
-  return {nonempty.load(), covered.load()};
+  BackEndCounts counts;
+  counts.tiles_nonempty = nonempty.load();
+  counts.covered_pixels = covered.load();
+  counts.single_path_tiles = single_path.load();
+  for (int p = 0; p < kShadePathCount; ++p) counts.path_pixels[p] = path_pixels[p].load();
+  return counts;
 }
 
 }  // namespace fastshade

@@ -13,6 +13,8 @@ namespace fastshade {
 struct BackEndCounts {
   long long tiles_nonempty = 0;
   long long covered_pixels = 0;
+  long long path_pixels[kShadePathCount] = {};  // classified frames: visible pixels per path
+  long long single_path_tiles = 0;  // classified frames: tiles that ran one path's kernel alone
 };
 
 class TileExecutor {
@@ -20,7 +22,7 @@ class TileExecutor {
   TileExecutor();
   ~TileExecutor();
   // Runs inside the caller's task arena. `image` must already have the frame's size.
-  BackEndCounts run(const Frame& frame, DrawTriangleFn draw, Image& image);
+  BackEndCounts run(const Frame& frame, const TileDraw& draw, Image& image);
 
  private:
   struct Scratch;

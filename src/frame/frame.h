@@ -8,6 +8,7 @@
 
 #include "core/limits.h"
 #include "frame/shade_constants.h"
+#include "frame/shade_path.h"
 
 namespace fastshade {
 
@@ -47,6 +48,10 @@ inline constexpr uint16_t kBackFacing = 1;
 // Bits 1-3: which Sierpinski part of its triangle this record covers (0: the whole triangle;
 // frame/edge_function.h). The record keeps the parent's vertices: attributes are the parent's.
 inline constexpr int kSierpinskiShift = 1;
+// Bits 4-5: the shading path the classifier chose (frame/shade_path.h); 0 when the frame's
+// method does not classify.
+inline constexpr int kShadePathShift = 4;
+inline constexpr uint16_t kShadePathMask = 3 << kShadePathShift;
 static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
 
 // One chunk of the front end's work: the triangles it set up (in draw order) and the vertex
@@ -56,7 +61,9 @@ struct Chunk {
   AttrArrays clipped;  // attributes of vertices that clipping made
   uint32_t clipped_count = 0;
   std::vector<uint32_t> tile_counts;  // per tile: how many of this chunk's triangles it holds
+  std::vector<uint8_t> tile_paths;    // per tile: bit p set if a triangle takes path p (classified frames)
   long long dropped = 0, culled = 0;
+  PathTally paths;                    // what the classifier decided for this chunk's triangles
 };
 
 // Bin entries name a triangle as (chunk, index in chunk). Clipping one input triangle makes at
@@ -85,7 +92,13 @@ struct Frame {
   // chunk by chunk and in draw order within a chunk.
   std::vector<uint32_t> tile_begin;
   std::vector<uint32_t> bin_entries;
+  // Per tile, bit p set if one of its triangles takes shading path p: a tile with one path
+  // runs that path's loop alone. Empty unless the method classifies.
+  std::vector<uint8_t> tile_paths;
 
+  static ShadePath path_of(const SetupTriangle& t) {
+    return static_cast<ShadePath>((t.flags & kShadePathMask) >> kShadePathShift);
+  }
   const SetupTriangle& triangle(uint32_t entry) const {
     return chunks[entry >> kBinIndexBits].triangles[entry & ((1u << kBinIndexBits) - 1)];
   }

@@ -28,16 +28,31 @@ void for_each_tile(const TileGrid& grid, const SetupTriangle& t, Visit&& visit) 
 
 }  // namespace
 
-void count_chunk_bins(const TileGrid& grid, Chunk& chunk) {
+void count_chunk_bins(const TileGrid& grid, bool classified, Chunk& chunk) {
   chunk.tile_counts.assign(grid.tile_count(), 0);
   uint32_t* counts = chunk.tile_counts.data();
-  for (const SetupTriangle& t : chunk.triangles)
-    for_each_tile(grid, t, [&](int tile) { ++counts[tile]; });
+  if (!classified) {
+    chunk.tile_paths.clear();
+    for (const SetupTriangle& t : chunk.triangles)
+      for_each_tile(grid, t, [&](int tile) { ++counts[tile]; });
+    return;
+  }
+  chunk.tile_paths.assign(grid.tile_count(), 0);
+  uint8_t* paths = chunk.tile_paths.data();
+  for (const SetupTriangle& t : chunk.triangles) {
+    const uint8_t bit = uint8_t(1u << static_cast<int>(Frame::path_of(t)));
+    for_each_tile(grid, t, [&](int tile) {
+      ++counts[tile];
+      paths[tile] |= bit;
+    });
+  }
 }
 
 void plan_bins(Frame& frame) {
   const int tiles = frame.grid.tile_count();
   frame.tile_begin.resize(tiles + 1);
+  const bool classified = !frame.chunks.empty() && !frame.chunks[0].tile_paths.empty();
+  frame.tile_paths.assign(classified ? tiles : 0, 0);
   uint32_t total = 0;
   for (int tile = 0; tile < tiles; ++tile) {
     frame.tile_begin[tile] = total;
@@ -45,6 +60,7 @@ void plan_bins(Frame& frame) {
       const uint32_t n = chunk.tile_counts[tile];
       chunk.tile_counts[tile] = total;  // from now on: where this chunk writes in this tile
       total += n;
+      if (classified) frame.tile_paths[tile] |= chunk.tile_paths[tile];
     }
   }
   frame.tile_begin[tiles] = total;

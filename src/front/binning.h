@@ -4,11 +4,12 @@
 
 namespace fastshade {
 
-// Counts one chunk's triangles per tile (into chunk.tile_counts). Parallel over chunks.
-void count_chunk_bins(const TileGrid& grid, Chunk& chunk);
+// Counts one chunk's triangles per tile (into chunk.tile_counts) and, for a classified frame,
+// which shading paths each tile holds (chunk.tile_paths). Parallel over chunks.
+void count_chunk_bins(const TileGrid& grid, bool classified, Chunk& chunk);
 
-// Lays out frame.tile_begin and turns every chunk's counts into its write cursors. Serial:
-// tiles x chunks additions.
+// Lays out frame.tile_begin, merges the chunks' tile paths into frame.tile_paths, and turns
+// every chunk's counts into its write cursors. Serial: tiles x chunks additions.
 void plan_bins(Frame& frame);
 
 // Writes one chunk's entries at its cursors. Parallel over chunks.

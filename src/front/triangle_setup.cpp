@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 #include "frame/edge_function.h"
 #include "front/clip.h"
 
@@ -19,7 +21,15 @@ bool covers_centre(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
 
 class ChunkBuilder {
  public:
-  ChunkBuilder(const SetupParams& p, Chunk& chunk) : p_(p), chunk_(chunk) {}
+  ChunkBuilder(const SetupParams& p, const AttrArrays& attrs, Chunk& chunk)
+      : p_(p), attrs_(attrs), chunk_(chunk) {}
+
+  // The input triangle the next emits come from (its pieces after clipping share its path).
+  void begin_source(const uint32_t* idx, uint16_t material) {
+    source_ = idx;
+    material_ = material;
+    path_[0] = path_[1] = ShadePath::Unclassified;
+  }
 
   // Culls, winds and bounds one triangle of snapped vertices.
   void emit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t attr_a,
@@ -71,7 +81,28 @@ class ChunkBuilder {
     t.px_max[1] = static_cast<int16_t>(py1);
     t.material = material;
     t.flags = back_facing ? kBackFacing : 0;
+    if (p_.classifier)
+      t.flags |= static_cast<uint16_t>(static_cast<int>(path(back_facing)) << kShadePathShift);
     if (p_.sierpinski && std::max(px1 - px0, py1 - py0) + 1 >= limits::kSierpinskiMinPx) split_sierpinski();
+  }
+
+  // The source triangle's path for this facing, classified on first use.
+  ShadePath path(bool back_facing) {
+    ShadePath& cached = path_[back_facing];
+    if (cached != ShadePath::Unclassified) return cached;
+    const ShadeConstants& k = p_.classifier->shade();
+    // Two-sided lighting shades a back face with its normals flipped (shade/phong-inl.h).
+    const double flip = (k.two_sided && back_facing) ? -1.0 : 1.0;
+    ClassifyInput in;
+    in.local_viewer = k.local_viewer;
+    for (int i = 0; i < 3; ++i) {
+      in.n[i] = flip * dvec3(attrs_.n_view[source_[i]]);
+      if (k.local_viewer) in.v[i] = glm::normalize(-dvec3(attrs_.pos_view[source_[i]]));
+    }
+    const Classification c = p_.classifier->classify(in, material_);
+    ++chunk_.paths.triangles[static_cast<int>(c.path)];
+    chunk_.paths.lights_with_highlight |= c.lights_with_highlight;
+    return cached = c.path;
   }
 
   // Replaces the triangle just emitted by its four Sierpinski parts (frame/edge_function.h):
@@ -131,7 +162,11 @@ class ChunkBuilder {
 
  private:
   const SetupParams& p_;
+  const AttrArrays& attrs_;
   Chunk& chunk_;
+  const uint32_t* source_ = nullptr;
+  uint16_t material_ = 0;
+  ShadePath path_[2] = {};  // per facing: front, back
 };
 
 }  // namespace
@@ -143,7 +178,8 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   chunk.clipped.clear();
   chunk.clipped_count = 0;
   chunk.dropped = chunk.culled = 0;
-  ChunkBuilder builder(params, chunk);
+  chunk.paths = {};
+  ChunkBuilder builder(params, attrs, chunk);
   const uint8_t* flags = pv.flags.data();
   const ScreenVertex* screen = pv.screen.data();
   for (uint32_t t = first; t < last; ++t) {
@@ -157,6 +193,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
       ++chunk.culled;
       continue;
     }
+    builder.begin_source(idx.data(), g.triangle_material[t]);
     if (!((f0 | f1 | f2) & kNeedsClip))
       builder.emit(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2],
                    g.triangle_material[t]);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "classify/classifier.h"
 #include "fastshade/scene.h"
 #include "frame/frame.h"
 #include "front/scene_geometry.h"
@@ -16,6 +17,11 @@ struct SetupParams {
   Cull cull = Cull::None;
   bool with_attrs = false;  // clipping interpolates attributes only if the method reads them
   bool sierpinski = false;  // split large triangles into their four Sierpinski parts
+  // Classifying methods (`auto`): the shading path of every triangle, decided here, once,
+  // from its input triangle's vertex normals (a clipped piece inherits its triangle's path:
+  // its normals are a subset of the triangle's). Needs the mesh's n_view (and pos_view for
+  // a local viewer).
+  const Classifier* classifier = nullptr;
 };
 
 // Triangles [first, last) of the scene into `chunk` (cleared first, capacity kept).

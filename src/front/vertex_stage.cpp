@@ -74,9 +74,11 @@ void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Vie
             if (needs.color) {
               const glm::vec3 v_view = shade.local_viewer ? glm::normalize(-glm::vec3(pos_view))
                                                           : glm::vec3(0, 0, 1);
-              attrs.color[i] = glm::clamp(
-                  blinn_phong<float>(n_view, v_view, !shade.local_viewer, material, shade), 0.0f,
-                  1.0f);
+              const glm::vec3 lit =
+                  needs.diffuse_color
+                      ? blinn_phong<float, false>(n_view, v_view, !shade.local_viewer, material, shade)
+                      : blinn_phong<float>(n_view, v_view, !shade.local_viewer, material, shade);
+              attrs.color[i] = glm::clamp(lit, 0.0f, 1.0f);
             }
           }
         });

@@ -14,6 +14,7 @@ namespace fastshade {
 
 struct AttrNeeds {  // which attribute arrays a method reads (shade/method.h decides)
   bool normal = false, color = false, position = false;
+  bool diffuse_color = false;  // the vertex colour without its specular term (`auto`'s Gouraud)
 };
 
 struct ViewTransform {

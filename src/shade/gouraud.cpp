@@ -23,7 +23,9 @@ HWY_INLINE auto GouraudShade(D d, const GouraudSpanInput& in, const LaneOffsets<
                          hn::Mul(EvalPlane(d, in.c_over_w[2], o), w));
 }
 
-template <bool kSrgb>
+// kSpecular = false: `auto`'s diffuse-only Gouraud (the vertex stage lit the vertices
+// without the specular term too).
+template <bool kSrgb, bool kSpecular>
 void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
@@ -42,7 +44,7 @@ void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
                            : glm::vec3(0, 0, 1);
         const glm::vec3 n_view = frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
         color = glm::clamp(
-            blinn_phong<float>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k), 0.0f,
+            blinn_phong<float, kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k), 0.0f,
             1.0f);
       }
       for (int c = 0; c < 3; ++c) c_over_w[i][c] = double(color[c]) * t.inv_w[i];
@@ -58,7 +60,10 @@ void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   });
 }
 
-DrawTriangleFn SelectGouraud(bool srgb) { return srgb ? &DrawGouraud<true> : &DrawGouraud<false>; }
+DrawTriangleFn SelectGouraud(bool srgb, bool specular) {
+  if (specular) return srgb ? &DrawGouraud<true, true> : &DrawGouraud<false, true>;
+  return srgb ? &DrawGouraud<true, false> : &DrawGouraud<false, false>;
+}
 
 void GouraudSpan(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row) {
   if (srgb)
@@ -83,7 +88,11 @@ AttrNeeds gouraud_needs(const ShadeConstants& shade) {
 }
 
 DrawTriangleFn select_gouraud(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectGouraud)(shade.srgb);
+  return HWY_DYNAMIC_DISPATCH(SelectGouraud)(shade.srgb, true);
+}
+
+DrawTriangleFn select_gouraud_diffuse(const ShadeConstants& shade) {
+  return HWY_DYNAMIC_DISPATCH(SelectGouraud)(shade.srgb, false);
 }
 
 void gouraud_span(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row) {

@@ -3,54 +3,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "classify/highlight_bound.h"
 #include "core/limits.h"
 #include "shade/fast_math.h"
 #include "shade/hybrid.h"
 
 namespace fastshade {
-
-namespace {
-
-// Largest N.H on the arc from na to nb (normalised lerp), NOTES.md section 2: an interior
-// maximum where X + Y > 0 and 0 < t < 1, with peak sqrt((X^2 + Y^2 - 2XYc) / (1 - c^2)).
-float arc_max(float x, float y, float c) {
-  float best = std::max(x, y);
-  const float one_minus_c = 1.0f - c;
-  if (x + y > 0.0f && one_minus_c > 1e-6f) {
-    const float t = (y - x * c) / (one_minus_c * (x + y));
-    if (t > 0.0f && t < 1.0f)
-      best = std::max(best, std::sqrt(std::max(0.0f, (x * x + y * y - 2.0f * x * y * c) /
-                                                          (one_minus_c * (1.0f + c)))));
-  }
-  return std::min(best, 1.0f);
-}
-
-// Is h inside the spherical triangle of the unit normals (then N.H reaches 1 inside)?
-bool inside_cone(const glm::vec3 n[3], const glm::vec3& h) {
-  int positive = 0, negative = 0;
-  for (int i = 0; i < 3; ++i) {
-    const glm::vec3 plane = glm::cross(n[i], n[(i + 1) % 3]);
-    const float side = glm::dot(plane, h) * glm::dot(plane, n[(i + 2) % 3]);
-    positive += side > 0.0f;
-    negative += side < 0.0f;
-  }
-  return negative == 0 && positive > 0;
-}
-
-// max N.H over the triangle's interpolated normals: edges' closed-form maxima, or 1 when the
-// highlight's centre is inside (the interior test the paper lacks, NOTES.md section 2).
-float triangle_max(const glm::vec3 n[3], const glm::vec3& h) {
-  if (inside_cone(n, h)) return 1.0f;
-  float best = -1.0f;
-  for (int i = 0; i < 3; ++i) {
-    const glm::vec3& a = n[i];
-    const glm::vec3& b = n[(i + 1) % 3];
-    best = std::max(best, arc_max(glm::dot(a, h), glm::dot(b, h), glm::dot(a, b)));
-  }
-  return best;
-}
-
-}  // namespace
 
 int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, float tol) {
   constexpr int kBlock = limits::kSeedBlockPx;
@@ -83,7 +41,8 @@ int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, f
     // A local viewer's H at the triangle's centre stands for all of it (H turns far less
     // than the normal across a triangle: it follows the view direction).
     if (in.shade->local_viewer) h = glm::normalize(light.l_view + glm::normalize(-tri.centre_view));
-    const float c_max = triangle_max(tri.n, h);
+    const dvec3 n_d[3] = {dvec3(tri.n[0]), dvec3(tri.n[1]), dvec3(tri.n[2])};
+    const float c_max = static_cast<float>(max_dot_over_triangle(n_d, dvec3(h)));
     const float spec = c_max > 0.0f
                            ? n * fast_math::exp2(std::max(n - 2.0f, 0.0f) * fast_math::log2(c_max)) * (n + 1.0f)
                            : 0.0f;

@@ -25,8 +25,9 @@ inline T specular_power(T c, T n) {
   return c > T(0) ? std::pow(c, n) : T(0);
 }
 
-// n_view must be unit length; v_view is the unit direction toward the eye.
-template <typename T>
+// n_view must be unit length; v_view is the unit direction toward the eye. kSpecular = false:
+// the diffuse-only colour of `auto`'s paths without a highlight.
+template <typename T, bool kSpecular = true>
 inline Vec3T<T> blinn_phong(const Vec3T<T>& n_view, const Vec3T<T>& v_view, bool infinite_viewer,
                             const MaterialConstants& m, const ShadeConstants& k) {
   const Vec3T<T> kd(m.kd), ks(m.ks);
@@ -34,11 +35,14 @@ inline Vec3T<T> blinn_phong(const Vec3T<T>& n_view, const Vec3T<T>& v_view, bool
   Vec3T<T> c(k.ambient);
   for (const LightView& light : k.lights) {
     const Vec3T<T> l(light.l_view);
-    const Vec3T<T> h = infinite_viewer ? Vec3T<T>(light.h_view) : glm::normalize(l + v_view);
     const T diffuse = std::max(glm::dot(n_view, l), T(0));
-    // The yardstick (double) is exact; float paths use the frame's approximation (--brdf).
-    const T specular = std::is_same_v<T, double> ? specular_power(glm::dot(n_view, h), n)
-                                                 : T(eval_brdf_one(m.lobe, float(glm::dot(n_view, h))));
+    T specular = 0;
+    if constexpr (kSpecular) {
+      const Vec3T<T> h = infinite_viewer ? Vec3T<T>(light.h_view) : glm::normalize(l + v_view);
+      // The yardstick (double) is exact; float paths use the frame's approximation (--brdf).
+      specular = std::is_same_v<T, double> ? specular_power(glm::dot(n_view, h), n)
+                                           : T(eval_brdf_one(m.lobe, float(glm::dot(n_view, h))));
+    }
     c += Vec3T<T>(light.color) * (kd * diffuse + ks * specular);
   }
   return c;

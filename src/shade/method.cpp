@@ -8,18 +8,28 @@ namespace fastshade {
 
 namespace {
 
+template <DrawTriangleFn (*kSelect)(const ShadeConstants&)>
+TileDraw select_one(const ShadeConstants& shade, const RenderOptions&) {
+  return {kSelect(shade)};
+}
+
 const std::array kMethods = {
+    Method{"auto",
+           "the classifier's plan: diffuse-only Gouraud where no highlight can show and "
+           "interpolation stays within --max-error, per-pixel diffuse where it would not, "
+           "--spec-method where a highlight may show (docs/CLASSIFIER.md)",
+           auto_needs, select_auto, auto_refuses, true},
     Method{"reference",
            "per-pixel Blinn-Phong in double precision from exact barycentrics: the yardstick",
-           reference_needs, select_reference, reference_refuses},
+           reference_needs, select_one<select_reference>, reference_refuses, false},
     Method{"phong", "per-pixel Blinn-Phong in float with exact pow, as a GL fragment shader does",
-           phong_needs, select_phong, accepts_all},
+           phong_needs, select_one<select_phong>, accepts_all, false},
     Method{"hybrid",
-           "Phong at the ends of 2^m-pixel segments, linear between, m adapted per 16-px block "
+           "Phong at the ends of 2^m-pixel segments, linear between, m adapted per triangle "
            "to --max-error",
-           phong_needs, select_hybrid, refuses_normals},
+           phong_needs, select_one<select_hybrid>, refuses_normals, false},
     Method{"gouraud", "Blinn-Phong per vertex, colour interpolated perspective-correctly",
-           gouraud_needs, select_gouraud, refuses_normals},
+           gouraud_needs, select_one<select_gouraud>, refuses_normals, false},
 };
 
 }  // namespace

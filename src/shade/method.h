@@ -17,25 +17,40 @@ namespace fastshade {
 // One tile's scratch: colour packed as R | G << 8 | B << 16 | 0xFF << 24, and float depth.
 // Rows are `stride` pixels; (x_origin, y_origin) is the image position of element 0. The
 // buffers carry kScratchPadPx pixels of slack so a vector may read and blend past a row end.
+struct TileTarget;
+using DrawTriangleFn = void (*)(const Frame& frame, uint32_t entry, const TileTarget& target);
+
 struct TileTarget {
   uint32_t* color;
   float* depth;
   int stride;
   int x_origin, y_origin;
   PixelRect rect;  // tile ∩ image
+  // Classifying methods: the draw function of each shading path, and the alpha byte's tag
+  // (XORed into 0xFF: a pixel drawn on path p keeps alpha p, for the per-path pixel counts).
+  const DrawTriangleFn* path_draw = nullptr;
+  uint32_t alpha_xor = 0;
 };
 inline constexpr int kScratchPadPx = 64;
+inline constexpr uint32_t path_alpha_xor(ShadePath p) { return (0xFFu ^ static_cast<uint32_t>(p)) << 24; }
 
-using DrawTriangleFn = void (*)(const Frame& frame, uint32_t entry, const TileTarget& target);
+// What a method draws a tile with: `any` for every triangle; a classifying method also names
+// each path's function, and a tile whose triangles all take one path runs that one directly.
+struct TileDraw {
+  DrawTriangleFn any = nullptr;
+  DrawTriangleFn path[kShadePathCount] = {};
+};
 
 struct Method {
   std::string_view name;
   std::string_view summary;
   AttrNeeds (*needs)(const ShadeConstants& shade);
   // Chooses the variant for this frame (ISA, viewer, sRGB...): decided once, outside loops.
-  DrawTriangleFn (*select)(const ShadeConstants& shade);
+  TileDraw (*select)(const ShadeConstants& shade, const RenderOptions& options);
   // Why these options make no sense with this method ("--brdf: ..."), or "" if they do.
   std::string (*refuse)(const RenderOptions& options);
+  // Whether the front end classifies triangles into shading paths for this method.
+  bool classifies;
 };
 
 std::span<const Method> all_methods();

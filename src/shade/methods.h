@@ -21,6 +21,16 @@ inline std::string accepts_all(const RenderOptions&) { return {}; }
 AttrNeeds gouraud_needs(const ShadeConstants& shade);
 DrawTriangleFn select_gouraud(const ShadeConstants& shade);
 
+// `auto`'s paths without a highlight: diffuse-only Gouraud, and per-pixel diffuse (normalised
+// per pixel, or by --normals adaptive|equal-angle).
+DrawTriangleFn select_gouraud_diffuse(const ShadeConstants& shade);
+DrawTriangleFn select_phong_diffuse(const ShadeConstants& shade);
+DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants& shade);
+
+AttrNeeds auto_needs(const ShadeConstants& shade);
+TileDraw select_auto(const ShadeConstants& shade, const RenderOptions& options);
+std::string auto_refuses(const RenderOptions& options);
+
 DrawTriangleFn select_hybrid(const ShadeConstants& shade);
 
 }  // namespace fastshade

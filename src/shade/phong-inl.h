@@ -40,26 +40,27 @@ struct ColorVecs {
 };
 
 // Blinn-Phong at the lanes' pixels before quantisation; phong_color_scalar() is its twin.
-template <bool kLocal, BrdfKind kBrdf, class D, class V = hn::Vec<D>>
+// kSpecular = false: the diffuse-only colour (`auto`'s per-pixel diffuse path).
+template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, class D, class V = hn::Vec<D>>
 HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
                                              const LaneOffsets<D>& o);
 
-template <bool kLocal, BrdfKind kBrdf, class D>
+template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, class D>
 HWY_INLINE ColorVecs<D> PhongColor(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
   using V = hn::Vec<D>;
   V nx = EvalPlane(d, in.n[0], o), ny = EvalPlane(d, in.n[1], o), nz = EvalPlane(d, in.n[2], o);
   Normalize(d, nx, ny, nz);
-  return PhongColorFromNormal<kLocal, kBrdf>(d, in, nx, ny, nz, o);
+  return PhongColorFromNormal<kLocal, kBrdf, kSpecular>(d, in, nx, ny, nz, o);
 }
 
 // Blinn-Phong for unit normals in lanes; phong_color_from_normal_scalar() is its twin.
-template <bool kLocal, BrdfKind kBrdf, class D, class V>
+template <bool kLocal, BrdfKind kBrdf, bool kSpecular, class D, class V>
 HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
                                              const LaneOffsets<D>& o) {
   const MaterialConstants& m = *in.material;
   const ShadeConstants& k = *in.shade;
   V vx, vy, vz;  // toward the eye (local viewer only)
-  if constexpr (kLocal) {
+  if constexpr (kLocal && kSpecular) {
     const V w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, in.inv_w, o));
     vx = hn::Neg(hn::Mul(EvalPlane(d, in.p[0], o), w));
     vy = hn::Neg(hn::Mul(EvalPlane(d, in.p[1], o), w));
@@ -70,23 +71,27 @@ HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx
   for (const LightView& light : k.lights) {
     const V lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
             lz = hn::Set(d, light.l_view.z);
-    V hx, hy, hz;
-    if constexpr (kLocal) {
-      hx = hn::Add(lx, vx);
-      hy = hn::Add(ly, vy);
-      hz = hn::Add(lz, vz);
-      Normalize(d, hx, hy, hz);
-    } else {
-      hx = hn::Set(d, light.h_view.x);
-      hy = hn::Set(d, light.h_view.y);
-      hz = hn::Set(d, light.h_view.z);
-    }
     const V diffuse = hn::Max(Dot<D>(nx, ny, nz, lx, ly, lz), hn::Zero(d));
-    const V specular = Brdf<kBrdf>(d, Dot<D>(nx, ny, nz, hx, hy, hz), m.lobe);
+    V specular = hn::Zero(d);
+    if constexpr (kSpecular) {
+      V hx, hy, hz;
+      if constexpr (kLocal) {
+        hx = hn::Add(lx, vx);
+        hy = hn::Add(ly, vy);
+        hz = hn::Add(lz, vz);
+        Normalize(d, hx, hy, hz);
+      } else {
+        hx = hn::Set(d, light.h_view.x);
+        hy = hn::Set(d, light.h_view.y);
+        hz = hn::Set(d, light.h_view.z);
+      }
+      specular = Brdf<kBrdf>(d, Dot<D>(nx, ny, nz, hx, hy, hz), m.lobe);
+    }
     auto channel = [&](V acc, int c) {
-      return hn::Add(acc, hn::Mul(hn::Set(d, light.color[c]),
-                                  hn::Add(hn::Mul(hn::Set(d, m.kd[c]), diffuse),
-                                          hn::Mul(hn::Set(d, m.ks[c]), specular))));
+      const V kd_diffuse = hn::Mul(hn::Set(d, m.kd[c]), diffuse);
+      // Diffuse only: no ks * 0 term, so no cost (the sum is the same: x + 0 = x).
+      const V lit = kSpecular ? hn::Add(kd_diffuse, hn::Mul(hn::Set(d, m.ks[c]), specular)) : kd_diffuse;
+      return hn::Add(acc, hn::Mul(hn::Set(d, light.color[c]), lit));
     };
     r = channel(r, 0);
     g = channel(g, 1);
@@ -114,14 +119,14 @@ HWY_INLINE void set_up_phong_planes(const Frame& frame, uint32_t entry, const Se
   if constexpr (kLocal) in.inv_w = make_plane(bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
 }
 
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, class D>
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, class D>
 HWY_INLINE auto PhongShade(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
-  const ColorVecs<D> c = PhongColor<kLocal, kBrdf>(d, in, o);
+  const ColorVecs<D> c = PhongColor<kLocal, kBrdf, kSpecular>(d, in, o);
   return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
 }
 
-// `phong` for one binned triangle in a tile.
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+// `phong` for one binned triangle in a tile; kSpecular = false: `auto`'s per-pixel diffuse.
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
 void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
@@ -139,7 +144,7 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   };
   ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
     if (!ready) set_up();
-    return PhongShade<kLocal, kSrgb, kBrdf>(d, in, o);
+    return PhongShade<kLocal, kSrgb, kBrdf, kSpecular>(d, in, o);
   });
 }
 
@@ -148,12 +153,12 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
 // whole triangle, tile rows only, because a row's covered run [xl, xr] fixes where segment or
 // block ends go, whatever tile this is. on_setup(in) runs once, when the first run is found
 // (planes are ready then); run(in, xl, xr, py, x0, x1, row) shades the tile's part [x0, x1].
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, typename OnSetup, typename Run>
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, typename OnSetup, typename Run>
 HWY_INLINE void DrawByRowRuns(const Frame& frame, uint32_t entry, const TileTarget& tt,
                               int min_width_px, OnSetup&& on_setup, Run&& run) {
   const SetupTriangle& whole = frame.triangle(entry);
   if (whole.px_max[0] - whole.px_min[0] + 1 < min_width_px) {
-    DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
+    DrawPhong<kLocal, kSrgb, kBrdf, kSpecular>(frame, entry, tt);
     return;
   }
   TriangleInTile tri;

@@ -25,6 +25,12 @@ using PhongSpanFn = void (*)(const PhongSpanInput&, int, int, int, RowTarget);
 FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhong, DrawPhong, DrawTriangleFn)
 FASTSHADE_DEFINE_VARIANT_PICKER(PickPhongSpan, PhongSpanVariant, PhongSpanFn)
 
+// Diffuse only: no half vector, so neither the viewer nor the lobe matters.
+DrawTriangleFn SelectPhongDiffuse(bool srgb) {
+  return srgb ? &DrawPhong<false, true, BrdfKind::Exact, false>
+              : &DrawPhong<false, false, BrdfKind::Exact, false>;
+}
+
 void PhongSpan(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
   PickPhongSpan(in.shade->local_viewer, in.shade->srgb, in.material->lobe.kind)(in, py, x0, x1, row);
 }
@@ -38,6 +44,7 @@ namespace fastshade {
 
 HWY_EXPORT(SelectPhong);
 HWY_EXPORT(PhongSpan);
+HWY_EXPORT(SelectPhongDiffuse);
 
 AttrNeeds phong_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};
@@ -46,6 +53,10 @@ AttrNeeds phong_needs(const ShadeConstants& shade) {
 DrawTriangleFn select_phong(const ShadeConstants& shade) {
   if (shade.normals != SpanNormals::Normalize) return select_phong_normals(shade);
   return HWY_DYNAMIC_DISPATCH(SelectPhong)(shade.local_viewer, shade.srgb, shade.brdf.kind);
+}
+
+DrawTriangleFn select_phong_diffuse(const ShadeConstants& shade) {
+  return HWY_DYNAMIC_DISPATCH(SelectPhongDiffuse)(shade.srgb);
 }
 
 void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {

@@ -21,7 +21,7 @@ namespace HWY_NAMESPACE {
 // pixel: a block's end normals would cost as much as the pixels.
 inline constexpr int kBlockNormalsMinWidthPx = 8;
 
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
 void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
                      int py, int x0, int x1, RowTarget row) {
   const hn::ScalableTag<float> d;
@@ -35,19 +35,20 @@ void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, cons
       auto mix = [&](int c) {
         return hn::Add(hn::Mul(alpha, hn::Set(d, nb.na[c])), hn::Mul(beta, hn::Set(d, nb.nz[c])));
       };
-      const auto c = PhongColorFromNormal<kLocal, kBrdf>(d, in, mix(0), mix(1), mix(2), o);
+      const auto c = PhongColorFromNormal<kLocal, kBrdf, kSpecular>(d, in, mix(0), mix(1), mix(2), o);
       return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
     });
   }
 }
 
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+// kSpecular = false: `auto`'s per-pixel diffuse path under --normals adaptive|equal-angle.
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
 void DrawPhongNormals(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadeConstants& k = frame.shade;
-  DrawByRowRuns<kLocal, kSrgb, kBrdf>(
+  DrawByRowRuns<kLocal, kSrgb, kBrdf, kSpecular>(
       frame, entry, tt, kBlockNormalsMinWidthPx, [](const PhongSpanInput&) {},
       [&](const PhongSpanInput& in, int xl, int xr, int py, int x0, int x1, RowTarget row) {
-        NormalsSpanImpl<kLocal, kSrgb, kBrdf>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0,
+        NormalsSpanImpl<kLocal, kSrgb, kBrdf, kSpecular>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0,
                                               x1, row);
       });
 }
@@ -56,6 +57,11 @@ using NormalsSpanFn = void (*)(const PhongSpanInput&, SpanNormals, float, const 
                                int, RowTarget);
 FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhongNormals, DrawPhongNormals, DrawTriangleFn)
 FASTSHADE_DEFINE_VARIANT_PICKER(PickNormalsSpan, NormalsSpanImpl, NormalsSpanFn)
+
+DrawTriangleFn SelectPhongNormalsDiffuse(bool srgb) {
+  return srgb ? &DrawPhongNormals<false, true, BrdfKind::Exact, false>
+              : &DrawPhongNormals<false, false, BrdfKind::Exact, false>;
+}
 
 void NormalsSpan(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
                  int x0, int x1, RowTarget row) {
@@ -72,9 +78,14 @@ namespace fastshade {
 
 HWY_EXPORT(SelectPhongNormals);
 HWY_EXPORT(NormalsSpan);
+HWY_EXPORT(SelectPhongNormalsDiffuse);
 
 DrawTriangleFn select_phong_normals(const ShadeConstants& shade) {
   return HWY_DYNAMIC_DISPATCH(SelectPhongNormals)(shade.local_viewer, shade.srgb, shade.brdf.kind);
+}
+
+DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants& shade) {
+  return HWY_DYNAMIC_DISPATCH(SelectPhongNormalsDiffuse)(shade.srgb);
 }
 
 void normals_span(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,

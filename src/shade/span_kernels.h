@@ -14,6 +14,7 @@ namespace fastshade {
 struct RowTarget {
   float* depth;
   uint32_t* color;
+  uint32_t alpha_xor = 0;  // XORed into every stored pixel: tags a classified path's pixels
 };
 
 struct GouraudSpanInput {

@@ -90,7 +90,7 @@ HWY_INLINE void ShadeSpanAt(D d, const Barycentrics& bary, const Plane& depth_pl
     const auto z = EvalPlane(d, depth_plane, o);
     const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
     if (hn::AllFalse(d, pass)) continue;
-    const auto rgba = shade(d, o, x);
+    const auto rgba = hn::Xor(shade(d, o, x), hn::Set(du, row.alpha_xor));
     hn::BlendedStore(z, pass, d, row.depth + x);
     hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
   }
@@ -123,7 +123,7 @@ HWY_INLINE void ShadeSpan(const Barycentrics& bary, const Plane& depth_plane, in
 
 inline RowTarget tile_row(const TileTarget& tt, int py) {
   return {tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin,
-          tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin};
+          tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin, tt.alpha_xor};
 }
 
 // Triangles at most 4 pixels wide in this tile are shaded in blocks of 4 columns by
@@ -171,7 +171,7 @@ HWY_INLINE void ShadeBlocks(TriangleInTile& tri, const TileTarget& tt, ShadeFn&&
     const auto pass = hn::Lt(z, hn::Load(d, lane_depth));
     if (hn::AllFalse(d, pass)) continue;
     hn::Store(z, d, lane_z);
-    hn::Store(shade(d, o), du, lane_rgba);
+    hn::Store(hn::Xor(shade(d, o), hn::Set(du, tt.alpha_xor)), du, lane_rgba);
     uint8_t pass_bytes[8] = {};
     hn::StoreMaskBits(d, pass, pass_bytes);
     uint32_t passed = 0;

@@ -39,7 +39,7 @@ TEST(Determinism, SceneFilesAreByteIdenticalForAnyThreadsAndTiles) {
   int count = 0;
   for (const char* file : {"default.json", "spheres.json", "torus_local.json"}) {
     const Scene scene = load_scene(scenes / file);
-    for (const char* method : {"phong", "gouraud", "hybrid", "reference"})
+    for (const char* method : {"auto", "phong", "gouraud", "hybrid", "reference"})
       expect_identical_across_threads_and_tiles(scene, method, file);
     // Sierpinski parts are drawn as separate tasks but must give the parent's image exactly.
     RenderOptions whole, parts;

@@ -65,7 +65,7 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
   for (uint32_t c = 0; c < frame.chunks.size(); ++c) {
     setup_chunk(g, vertices, frame.attrs, c * per_chunk, std::min<uint32_t>((c + 1) * per_chunk, n), params,
                 frame.chunks[c]);
-    count_chunk_bins(frame.grid, frame.chunks[c]);
+    count_chunk_bins(frame.grid, false, frame.chunks[c]);
     out.dropped += frame.chunks[c].dropped;
     out.culled += frame.chunks[c].culled;
     out.drawn += static_cast<long long>(frame.chunks[c].triangles.size());
@@ -77,7 +77,7 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
   image.height = height;
   image.rgb.resize(std::size_t(width) * height * 3);
   TileExecutor executor;
-  executor.run(frame, count_hits, image);
+  executor.run(frame, TileDraw{count_hits}, image);
   out.width = width;
   out.height = height;
   out.hits.resize(std::size_t(width) * height);

@@ -1,0 +1,83 @@
+// The highlight classifier: per triangle, per light, the largest specular term the triangle
+// can reach and the largest error Gouraud makes on its diffuse term, both bounded over the
+// normals the pipeline actually draws (linear, then normalised); from those, its shading path.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "classify/highlight_bound.h"
+#include "core/limits.h"
+#include "frame/shade_constants.h"
+#include "frame/shade_path.h"
+
+namespace fastshade {
+
+struct ClassifierParams {
+  // A triangle whose specular term stays below this (colour units) gets no specular work.
+  double spec_threshold = 1.0 / 510.0;
+  // A triangle without specular work takes Gouraud if its diffuse interpolation error plus
+  // the specular term it leaves out stays within this (colour units).
+  double gouraud_budget = 0.0;
+  // --classifier paper: highlight -> specular, everything else -> Gouraud (no error check).
+  bool paper_rule = false;
+};
+
+// One triangle's unit vertex normals and, for a local viewer, unit directions toward the eye
+// (view space; two-sided back faces already flipped).
+struct ClassifyInput {
+  dvec3 n[3];
+  dvec3 v[3];
+  bool local_viewer = false;
+};
+
+struct Classification {
+  ShadePath path = ShadePath::Specular;
+  double specular_bound = 0;  // colour units: largest specular term anywhere on the triangle
+  double diffuse_bound = 0;   // colour units: largest |Gouraud - per-pixel| of the diffuse term
+  uint64_t lights_with_highlight = 0;  // bit i: light i reaches the threshold
+};
+
+// Upper bound of max N.H over the triangle for light direction l (unit).
+double max_cos_nh(const ClassifyInput& in, const dvec3& l, const dvec3& h_infinite);
+
+// --max-error (8-bit steps) to the Gouraud path's budget in colour units.
+inline double auto_gouraud_budget(double max_error_lsb) {
+  return std::max(max_error_lsb - limits::kAutoFloatReserveLsb, 0.0) / 255.0;
+}
+
+// Built once per frame: per material and light the weights of the bounds and the cosine
+// below which a highlight is negligible, so that most triangles need neither pow nor the
+// exact edge maxima.
+class Classifier {
+ public:
+  Classifier(const ShadeConstants& shade, const ClassifierParams& params);
+  Classification classify(const ClassifyInput& in, int material) const;
+  const ShadeConstants& shade() const { return shade_; }
+
+ private:
+  struct LightTerms {
+    double spec_weight;    // max channel of ks * light colour
+    double cos_negligible; // N.H below this: the term is under kNegligible * threshold
+    double diffuse_weight; // max channel of kd * light colour
+  };
+  struct MaterialTerms {
+    std::vector<LightTerms> lights;
+    double shininess;
+    bool may_saturate;     // ambient + sum kd * colour can exceed 1 in some channel
+  };
+  struct Bounds {
+    double specular = 0, diffuse = 0;
+    uint64_t lights_with_highlight = 0;
+  };
+  struct NormalCone;
+  Bounds specular(const ClassifyInput& in, const MaterialTerms& m, const NormalCone* cone) const;
+  double diffuse(const ClassifyInput& in, const MaterialTerms& m, const NormalCone* cone) const;
+  bool saturates(const ClassifyInput& in, int material) const;
+
+  const ShadeConstants& shade_;
+  ClassifierParams params_;
+  std::vector<MaterialTerms> materials_;
+};
+
+}  // namespace fastshade

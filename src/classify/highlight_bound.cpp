@@ -1,0 +1,70 @@
+#include "classify/highlight_bound.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace fastshade {
+
+double arc_max(const dvec3& a, const dvec3& b, const dvec3& x) {
+  const double ends = std::max(glm::dot(a, x), glm::dot(b, x));
+  // The arc lies in the plane through a, b and the origin, with normal k. The great circle's
+  // nearest point to x is x's projection onto that plane, direction u, at x . u = |x_p|
+  // (NOTES.md's closed-form peak sqrt((X^2 + Y^2 - 2XYc) / (1 - c^2)), without dividing by
+  // 1 - c^2, which vanishes for nearly equal normals).
+  const dvec3 k = glm::cross(a, b);
+  const double k_len = glm::length(k);
+  if (!(k_len > 0.0)) return ends;  // equal or antiparallel: no arc between them
+  const dvec3 k_unit = k / k_len;
+  const dvec3 x_plane = x - glm::dot(x, k_unit) * k_unit;
+  // u is between a and b (the short way round k) iff a x u and u x b both point along k.
+  if (glm::dot(glm::cross(a, x_plane), k) <= 0.0 || glm::dot(glm::cross(x_plane, b), k) <= 0.0)
+    return ends;
+  return std::max(ends, glm::length(x_plane));
+}
+
+bool inside_cone(const dvec3 n[3], const dvec3& x) {
+  const double volume = glm::dot(n[0], glm::cross(n[1], n[2]));
+  if (volume == 0.0) return false;  // coplanar normals: the edges' arcs cover the region
+  // x = sum mu_i n_i with every mu_i >= 0; mu_i has the sign of det(x replacing n_i) / volume.
+  for (int i = 0; i < 3; ++i) {
+    const double mu = glm::dot(x, glm::cross(n[(i + 1) % 3], n[(i + 2) % 3]));
+    if (mu * volume < 0.0) return false;
+  }
+  return true;
+}
+
+double max_dot_over_triangle(const dvec3 n[3], const dvec3& x) {
+  if (inside_cone(n, x)) return 1.0;
+  double best = -1.0;
+  for (int i = 0; i < 3; ++i) best = std::max(best, arc_max(n[i], n[(i + 1) % 3], x));
+  return std::min(best, 1.0);
+}
+
+double min_length_over_triangle(const dvec3 n[3]) {
+  // The triangle's closest point to the origin: on an edge (the segments' closest points,
+  // robust for the equal or collinear normals of flat and nearly flat triangles), or inside,
+  // where it is the origin's projection onto the triangle's plane.
+  double best = 1e300;
+  for (int i = 0; i < 3; ++i) {
+    const dvec3 &a = n[i], &b = n[(i + 1) % 3];
+    const dvec3 ab = b - a;
+    const double len2 = glm::dot(ab, ab);
+    const double t = len2 > 0.0 ? std::clamp(-glm::dot(a, ab) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, glm::length(a + t * ab));
+  }
+  const dvec3 normal = glm::cross(n[1] - n[0], n[2] - n[0]);
+  const double normal2 = glm::dot(normal, normal);
+  if (normal2 > 0.0) {
+    const dvec3 p = (glm::dot(n[0], normal) / normal2) * normal;
+    // Inside iff p is on the inner side of all three edges.
+    bool inside = true;
+    for (int i = 0; i < 3; ++i)
+      inside &= glm::dot(glm::cross(n[(i + 1) % 3] - n[i], p - n[i]), normal) >= 0.0;
+    if (inside) best = std::min(best, glm::length(p));
+  }
+  return best;
+}
+
+}  // namespace fastshade

@@ -1,0 +1,61 @@
+#include "exec/left_out.h"
+
+#include <algorithm>
+#include <set>
+
+namespace fastshade {
+
+namespace {
+
+std::string plural(long long n, const char* word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+bool is_zero(const glm::vec3& c) { return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f; }
+
+}  // namespace
+
+std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeConstants& k,
+                                         const RenderOptions& o, const FrameFacts& f) {
+  std::vector<std::string> out;
+  const long long empty = f.tiles_total - f.back_end.tiles_nonempty;
+  if (empty > 0)
+    out.push_back(plural(empty, "empty tile") + " of " + std::to_string(f.tiles_total) +
+                  ": background copied, no bins, no scratch");
+  if (f.objects_culled > 0)
+    out.push_back(plural(f.objects_culled, "object") + " outside the view frustum: never transformed or set up");
+  if (o.method != "auto") return out;
+
+  if (k.lights.empty()) {
+    out.push_back("no lights: every colour is the ambient one; no normals, no classification, "
+                  "flat Gouraud");
+    return out;
+  }
+  std::set<int> used;
+  for (const ObjectRange& obj : g.objects) used.insert(obj.material);
+  for (int m : used) {
+    const MaterialConstants& mat = k.materials[m];
+    if (is_zero(mat.kd) && is_zero(mat.ks))
+      out.push_back("material " + std::to_string(m) + ": kd = ks = 0, ambient only: Gouraud, no per-pixel normals");
+    else if (is_zero(mat.ks))
+      out.push_back("material " + std::to_string(m) + ": ks = 0: no specular work on its triangles");
+  }
+  if (f.tally) {
+    for (std::size_t i = 0; i < k.lights.size() && i < 63; ++i)
+      if (!(f.tally->lights_with_highlight >> i & 1))
+        out.push_back("light " + std::to_string(i) + ": reaches no triangle's highlight above --spec-threshold");
+    const auto& t = f.tally->triangles;
+    if (t[static_cast<int>(ShadePath::Specular)] == 0)
+      out.push_back("no triangle can show a highlight: no specular code ran");
+    if (t[static_cast<int>(ShadePath::PixelDiffuse)] == 0 && t[static_cast<int>(ShadePath::Specular)] == 0)
+      out.push_back("no triangle needs per-pixel normals: Gouraud only");
+    if (f.back_end.single_path_tiles > 0)
+      out.push_back(plural(f.back_end.single_path_tiles, "tile") +
+                    " held one path only and ran its kernel alone (no per-triangle dispatch)");
+  }
+  out.push_back(k.local_viewer ? "local viewer: H per pixel on the specular path"
+                               : "viewer at infinity: one H per light for the whole frame");
+  return out;
+}
+
+}  // namespace fastshade

@@ -1,0 +1,23 @@
+// What a frame skipped because its scene needs none of it ("leave out what a scene does not
+// need"): one line each, for --explain and the stats JSON.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "exec/tile_executor.h"
+#include "fastshade/render.h"
+#include "front/scene_geometry.h"
+
+namespace fastshade {
+
+struct FrameFacts {
+  const PathTally* tally = nullptr;  // classified frames only
+  BackEndCounts back_end;
+  long long tiles_total = 0;
+  long long objects_culled = 0;  // objects wholly outside the view frustum
+};
+
+std::vector<std::string> left_out_report(const SceneGeometry& geometry, const ShadeConstants& shade,
+                                         const RenderOptions& options, const FrameFacts& facts);
+
+}  // namespace fastshade

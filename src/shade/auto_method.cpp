@@ -1,0 +1,53 @@
+// `auto`: the classifier's plan (classify/classifier.h) carried out. The front end marks each
+// triangle's shading path; here each path gets its kernel, chosen once per frame, and a tile
+// whose triangles share one path runs that kernel alone (exec/tile_executor.cpp).
+#include "shade/methods.h"
+
+namespace fastshade {
+
+namespace {
+
+// A tile with several paths: each triangle goes to its path's kernel, and its pixels carry
+// the path in their alpha byte (the per-path pixel counts of RenderStats).
+void draw_by_path(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  const ShadePath path = Frame::path_of(frame.triangle(entry));
+  TileTarget tagged = tt;
+  tagged.alpha_xor = path_alpha_xor(path);
+  tt.path_draw[static_cast<int>(path)](frame, entry, tagged);
+}
+
+}  // namespace
+
+AttrNeeds auto_needs(const ShadeConstants& k) {
+  // Without lights every colour is the ambient one: no normals, no classification.
+  const bool lit = !k.lights.empty();
+  return {.normal = lit || k.two_sided,
+          .color = true,
+          .position = lit && k.local_viewer,
+          .diffuse_color = true};
+}
+
+TileDraw select_auto(const ShadeConstants& k, const RenderOptions& o) {
+  if (k.lights.empty()) return {select_gouraud_diffuse(k)};
+  TileDraw draw;
+  draw.any = draw_by_path;
+  draw.path[static_cast<int>(ShadePath::GouraudDiffuse)] = select_gouraud_diffuse(k);
+  draw.path[static_cast<int>(ShadePath::PixelDiffuse)] =
+      k.normals == SpanNormals::Normalize ? select_phong_diffuse(k) : select_phong_normals_diffuse(k);
+  draw.path[static_cast<int>(ShadePath::Specular)] =
+      o.spec_method == "phong" ? select_phong(k) : select_hybrid(k);
+  return draw;
+}
+
+std::string auto_refuses(const RenderOptions& o) {
+  if (o.spec_method != "hybrid" && o.spec_method != "phong")
+    return "--spec-method: expected hybrid or phong, got '" + o.spec_method + "'";
+  if (o.classifier != "bound" && o.classifier != "paper")
+    return "--classifier: expected bound or paper, got '" + o.classifier + "'";
+  if (!(o.spec_threshold >= 0.0 && o.spec_threshold <= 1.0))
+    return "--spec-threshold: expected 0 to 1 (colour units; 1/510 is half an 8-bit step), got " +
+           std::to_string(o.spec_threshold);
+  return {};
+}
+
+}  // namespace fastshade
