@@ -309,7 +309,7 @@ int run_report(const ReportCommand& cmd) {
   }
   if (!plots_note.empty()) {
     for (ReportRow& r : rows) r.plot.clear();
-    std::fprintf(stderr, "fastshade: report: no plots: %s\n", plots_note.c_str());
+    if (!cmd.no_plots) std::fprintf(stderr, "fastshade: report: no plots: %s\n", plots_note.c_str());
   }
   write_text_file(out / "summary.md", summary_markdown(run, rows, plan.skipped, plots_note));
   std::printf("%s: %zu scenes x %zu configurations (%zu not in this build), median of %d frames, "
