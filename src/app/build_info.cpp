@@ -21,4 +21,11 @@ std::string cpu_model() {
   return "unknown";
 }
 
+double load_average() {
+  std::ifstream loadavg("/proc/loadavg");
+  double one_minute = -1;
+  loadavg >> one_minute;
+  return loadavg ? one_minute : -1;
+}
+
 }  // namespace fastshade

@@ -11,4 +11,8 @@ std::string build_commit();
 // The CPU's model name from /proc/cpuinfo ("unknown" where there is none).
 std::string cpu_model();
 
+// The 1-minute load average from /proc/loadavg (-1 where there is none): on a shared machine,
+// how many other runnable threads competed with a measurement.
+double load_average();
+
 }  // namespace fastshade

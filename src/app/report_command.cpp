@@ -285,7 +285,7 @@ int run_report(const ReportCommand& cmd) {
   }
   fs::create_directories(out);
 
-  RunInfo run{cpu_model(), active_isa(), build_commit(), utc_now(), 0, cmd.frames};
+  RunInfo run{cpu_model(), active_isa(), build_commit(), utc_now(), 0, cmd.frames, load_average()};
   std::vector<ReportRow> rows;
   {
     Progress progress(total_cost, stderr, ::isatty(STDERR_FILENO) != 0);
@@ -300,6 +300,7 @@ int run_report(const ReportCommand& cmd) {
     }
   }
 
+  run.load_end = load_average();
   write_text_file(out / "results.csv", results_csv(run, rows));
   write_text_file(out / "results.json", results_json(run, rows, plan.skipped));
   std::string plots_note = "not asked for (--no-plots).";

@@ -161,7 +161,9 @@ std::string results_json(const RunInfo& run, std::span<const ReportRow> rows,
                 {"isa", run.isa},
                 {"threads", run.threads},
                 {"frames", run.frames},
-                {"commit", run.commit}}},
+                {"commit", run.commit},
+                {"load_average_start", run.load_start},
+                {"load_average_end", run.load_end}}},
               {"rows", Json::array()},
               {"skipped", Json::array()}};
   for (const ReportRow& r : rows) out["rows"].push_back(row_fields(run, r));
@@ -178,7 +180,9 @@ std::string summary_markdown(const RunInfo& run, std::span<const ReportRow> rows
   }
   std::string md = "# fastshade report\n\n" + run.date_utc + ", commit `" + run.commit + "`, " +
                    run.machine + ", ISA " + run.isa + ", " + std::to_string(run.threads) +
-                   " threads, median of " + std::to_string(run.frames) + " frames per configuration.\n\n";
+                   " threads, median of " + std::to_string(run.frames) +
+                   " frames per configuration; load average " + fmt("%.1f", run.load_start) +
+                   " at the start, " + fmt("%.1f", run.load_end) + " at the end.\n\n";
   md +=
       "Errors are in 8-bit steps (LSB) against `reference` on the same scene. Times are medians "
       "of frames taken in turn across the configurations of a scene (one frame of each, then "

@@ -12,6 +12,7 @@ namespace fastshade {
 struct RunInfo {  // the same for every row of one run
   std::string machine, isa, commit, date_utc;
   int threads = 0, frames = 0;
+  double load_start = -1, load_end = -1;  // 1-minute load average before and after the run
 };
 
 struct ReportRow {
