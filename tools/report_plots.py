@@ -118,13 +118,15 @@ def panel(ax, rows, error_key, front_key, title, extra_colours):
         placer.place(x, y, short_label(r["config"], r["method"]),
                      color=colour_of(r["method"], extra_colours),
                      fontweight="bold" if on_front else "normal")
+
+
+def legend_handles(rows, extra_colours):
     handles = [matplotlib.lines.Line2D([], [], color="#555555", linestyle="--", linewidth=1,
                                        label="Pareto front (filled points)")]
     for method in OrderedDict((r["method"], None) for r in rows):
         handles.append(matplotlib.lines.Line2D([], [], marker="o", linestyle="", label=method,
                                                color=colour_of(method, extra_colours)))
-    # Lower left is where a configuration both fast and exact would sit: usually empty.
-    ax.legend(handles=handles, loc="lower left", fontsize=7)
+    return handles
 
 
 def main():
@@ -143,10 +145,13 @@ def main():
         fig, axes = plt.subplots(1, 2, figsize=(12, 5))
         panel(axes[0], rs, "rmse_lsb", "pareto_rmse", "RMSE", extra_colours)
         panel(axes[1], rs, "max_abs_lsb", "pareto_max", "max error", extra_colours)
+        # Below the panels: inside, it would hide points, and the fast accurate corner matters.
+        handles = legend_handles(rs, extra_colours)
+        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
         fig.suptitle(f"{scene}: {first['width']}x{first['height']}, {int(first['triangles']):,} "
                      f"triangles; {first['threads']} threads, {first['isa']}, median of "
                      f"{first['frames']} frames", fontsize=10)
-        fig.tight_layout()
+        fig.tight_layout(rect=(0, 0.05, 1, 1))
         fig.savefig(f"{out_dir}/{first['plot']}", dpi=90)
         plt.close(fig)
     return 0

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <ctime>
 #include <memory>
@@ -81,7 +82,7 @@ Plan plan_configs(const ReportCommand& cmd) {
     }
     if (why.empty()) {
       plan.configs.push_back({std::move(c), options});
-    } else if (!cmd.configs.empty() || plan.configs.size() < 2) {
+    } else if (!cmd.configs.empty() || plan.configs.size() < 2) {  // asked for, or reference/phong
       throw InputError("--config \"" + c.label + "\"", why);
     } else {
       plan.skipped.push_back({c.label, why});
