@@ -17,6 +17,7 @@
 #include "app/report_configs.h"
 #include "app/report_metrics.h"
 #include "app/report_output.h"
+#include "app/report_scenes.h"
 #include "fastshade/error.h"
 #include "shade/brdf.h"
 
@@ -121,6 +122,46 @@ TEST(ReportConfigs, ReferenceAndBaselineComeFirstOnce) {
   EXPECT_EQ(c[3].flags, (std::vector<std::string>{"--max-error", "2"}));
   EXPECT_EQ(configs_to_measure({}).size(), std::size(kReportConfigs));
   EXPECT_THROW(parse_config("   ", "--config"), InputError);
+}
+
+TEST(ReportScenes, DirectoriesExpandToScenesAndMeshesWithUniqueNames) {
+  const fs::path dir = fs::temp_directory_path() / ("fastshade_report_scenes_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sub");
+  std::ofstream(dir / "b.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(dir / "a.json") << "{}";
+  std::ofstream(dir / "notes.txt") << "not a scene";
+  std::ofstream(dir / "sub" / "a.json") << "{}";
+  const std::vector<SceneInput> in = expand_scene_inputs({dir, dir / "sub" / "a.json"});
+  ASSERT_EQ(in.size(), 3u);  // the .txt and the subdirectory are not inputs
+  EXPECT_EQ(in[0].name, "a.json");
+  EXPECT_FALSE(in[0].mesh);
+  EXPECT_EQ(in[1].name, "b.obj");
+  EXPECT_TRUE(in[1].mesh);
+  EXPECT_EQ(in[2].name, "a.json#2");
+  EXPECT_THROW(expand_scene_inputs({dir / "notes.txt"}), InputError);
+  EXPECT_THROW(expand_scene_inputs({dir / "missing.json"}), InputError);
+
+  // A bare mesh becomes a fit-camera scene.
+  const Scene mesh = load_report_scene(in[1]);
+  EXPECT_EQ(mesh.width, 1920);
+  EXPECT_EQ(mesh.height, 1080);
+  ASSERT_EQ(mesh.objects.size(), 1u);
+  EXPECT_EQ(mesh.objects[0].mesh->triangles.size(), 1u);
+  EXPECT_TRUE(mesh.two_sided);
+  fs::remove_all(dir);
+}
+
+TEST(ReportScenes, FindsTheRepositoryScenesNearTheProgram) {
+  // The test binary sits beside fastshade; in a build directory inside the repository (build/,
+  // as tools/dev.sh makes it) scenes/ is one level up.
+  const fs::path build_dir = fs::weakly_canonical(fs::path(FASTSHADE_BINARY).parent_path());
+  if (build_dir.parent_path() != fs::weakly_canonical(FASTSHADE_SOURCE_DIR))
+    GTEST_SKIP() << "build directory outside the source tree: " << build_dir;
+  const fs::path scenes = find_near_program("scenes");
+  ASSERT_FALSE(scenes.empty());
+  EXPECT_TRUE(fs::exists(scenes / "default.json")) << scenes;
+  EXPECT_TRUE(find_near_program("no_such_directory_anywhere_near").empty());
 }
 
 // The command itself, run as users run it.
