@@ -58,6 +58,26 @@ int main(int argc, char** argv) {
   CLI::App* b = app.add_subcommand("brdf-table", "error and cost of every BRDF approximation");
   b->add_option("--isa", table_isa, "SIMD target: scalar, sse4, avx2, avx512, best");
 
+  ReportCommand report;
+  CLI::App* rep = app.add_subcommand("report", "error against time of every method on every scene");
+  rep->add_option("scenes", report.scenes,
+                  "scene files, meshes, or directories of them; default: scenes/ and ../shared/models");
+  rep->add_option("--out", report.out, "output directory: results.csv/json, summary.md, plots/, heatmaps/")
+      ->capture_default_str();
+  rep->add_option("--threads", report.threads, "worker threads (0 = all)")->capture_default_str();
+  rep->add_option("--frames", report.frames, "timed frames per configuration after one warm-up")
+      ->capture_default_str();
+  rep->add_option("--isa", report.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+  rep->add_option("--models", report.models, "the shared meshes' directory, for the default set");
+  rep->add_option("--config", report.configs,
+                  "measure this instead of the built-in list, repeatable: --config \"hybrid --max-error 2\"")
+      ->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  rep->add_option("--heat-maps", report.heat_maps, "heat maps of the worst configurations per scene")
+      ->capture_default_str();
+  rep->add_flag("--no-plots", report.no_plots, "no Python plots: CSV, JSON and summary only");
+  rep->add_flag("--list-configs", report.list_configs, "print what would be measured, and exit");
+  report.parse_render_flags = render_flags_parser(*r, render.options);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -73,6 +93,7 @@ int main(int argc, char** argv) {
     if (*c) return run_compare(image_a, image_b, compare_json);
     if (*i) return run_info(mesh, info_json);
     if (*b) return run_brdf_table(table_isa);
+    if (*rep) return run_report(report);
   } catch (const InputError& e) {
     std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;

@@ -1,0 +1,31 @@
+#include "app/build_info.h"
+
+#include <fstream>
+
+#include "build_info_generated.h"
+
+namespace fastshade {
+
+std::string build_commit() { return FASTSHADE_GIT_COMMIT; }
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  const std::string key = "model name";
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.compare(0, key.size(), key) != 0) continue;
+    const std::size_t colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    const std::size_t first = line.find_first_not_of(" \t", colon + 1);
+    if (first != std::string::npos) return line.substr(first);
+  }
+  return "unknown";
+}
+
+double load_average() {
+  std::ifstream loadavg("/proc/loadavg");
+  double one_minute = -1;
+  loadavg >> one_minute;
+  return loadavg ? one_minute : -1;
+}
+
+}  // namespace fastshade

@@ -1,0 +1,324 @@
+// `fastshade report`: every configuration of kReportConfigs on every scene, against `reference`,
+// timed in interleaved rounds; writes results.csv/json, summary.md, plots and heat maps.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+
+#include "app/build_info.h"
+#include "app/commands.h"
+#include "app/heat_map.h"
+#include "app/pareto.h"
+#include "app/progress.h"
+#include "app/report_configs.h"
+#include "app/report_output.h"
+#include "app/report_scenes.h"
+#include "exec/isa.h"
+#include "fastshade/error.h"
+#include "io/atomic_file.h"
+
+extern char** environ;
+
+namespace fastshade {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxFrames = 1000;
+constexpr int kMaxHeatMaps = 100;
+// The progress bar's cost model: a frame costs its pixels plus this many per triangle. From
+// docs/PERFORMANCE.md's 1080p frames: bunny (69k triangles) 25 ms, dragon (871k) 100 ms, so a
+// triangle costs about as much as 10 pixels.
+constexpr double kTriangleCostPx = 10;
+// tools/report_plots.py exits with this when matplotlib cannot be imported.
+constexpr int kPlotsNoMatplotlib = 3;
+
+double frame_cost(const Scene& scene) {
+  double triangles = 0;
+  for (const Object& o : scene.objects) triangles += static_cast<double>(o.mesh->triangles.size());
+  return double(scene.width) * scene.height + kTriangleCostPx * triangles;
+}
+
+struct PlannedConfig {
+  ReportConfig config;
+  RenderOptions options;
+};
+
+struct Plan {
+  std::vector<PlannedConfig> configs;  // [0] reference, [1] phong
+  std::vector<SkippedConfig> skipped;
+};
+
+bool method_known(const std::string& name) {
+  const std::vector<MethodDescription> methods = list_methods();
+  return std::any_of(methods.begin(), methods.end(), [&](const auto& m) { return m.name == name; });
+}
+
+// A table line this build cannot run is skipped; a --config line it cannot run is bad usage.
+Plan plan_configs(const ReportCommand& cmd) {
+  Plan plan;
+  for (ReportConfig& c : configs_to_measure(cmd.configs)) {
+    std::string why;
+    RenderOptions options;
+    if (!method_known(c.method)) {
+      why = "no method '" + c.method + "' in this build";
+    } else {
+      std::vector<std::string> flags = {"--method", c.method};
+      flags.insert(flags.end(), c.flags.begin(), c.flags.end());
+      try {
+        options = cmd.parse_render_flags(flags);
+        options.threads = cmd.threads;
+        options.isa = cmd.isa;
+        validate(options);
+      } catch (const InputError& e) {
+        why = e.what();
+      }
+    }
+    if (why.empty()) {
+      plan.configs.push_back({std::move(c), options});
+    } else if (!cmd.configs.empty() || plan.configs.size() < 2) {  // asked for, or reference/phong
+      throw InputError("--config \"" + c.label + "\"", why);
+    } else {
+      plan.skipped.push_back({c.label, why});
+    }
+  }
+  return plan;
+}
+
+// The output directory may exist (a directory) or be creatable in an existing one.
+void check_out_dir(const fs::path& out) {
+  std::error_code ec;
+  if (fs::exists(out, ec)) {
+    if (!fs::is_directory(out, ec)) throw InputError(out.string(), "exists and is not a directory (--out)");
+    return;
+  }
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec))
+    throw InputError(out.string(), "directory '" + parent.string() + "' does not exist (--out)");
+  if (::access(parent.c_str(), W_OK) != 0)
+    throw InputError(out.string(), "directory '" + parent.string() + "' is not writable (--out)");
+}
+
+// Scene and configuration names as file names: letters, digits, '.', '-', '_' only.
+std::string file_stem(const std::string& name) {
+  std::string s = name;
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '_';
+  return s;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Measured {
+  Image image;
+  RenderStats stats;
+  std::vector<double> total_ms, raster_ms;
+};
+
+// Renders every configuration in rounds (round 0 warms up, untimed): one frame of each, then the
+// next round, starting one configuration later each time, so a machine that slows down during a
+// scene slows every configuration alike and none always runs right after the same other one.
+std::vector<Measured> measure_scene(const std::string& name, const Scene& scene, const Plan& plan,
+                                    int frames, Progress& progress) {
+  const double cost = frame_cost(scene);
+  std::vector<std::unique_ptr<Renderer>> renderers;
+  for (const PlannedConfig& p : plan.configs) renderers.push_back(std::make_unique<Renderer>(scene, p.options));
+  const std::size_t n = renderers.size();
+  std::vector<Measured> m(n);
+  for (int round = 0; round <= frames; ++round) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = (k + static_cast<std::size_t>(round)) % n;
+      StageTimes t;
+      m[i].image = renderers[i]->render_frame(&t);
+      if (round > 0) {
+        m[i].total_ms.push_back(t.total);
+        m[i].raster_ms.push_back(t.raster_shade);
+      }
+      const std::string when = round == 0 ? "warm-up" : "frame " + std::to_string(round) + "/" + std::to_string(frames);
+      progress.advance(cost, name + " " + when + ": " + plan.configs[i].config.label);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) m[i].stats = renderers[i]->last_stats();
+  return m;
+}
+
+std::vector<ReportRow> scene_rows(const std::string& name, const Plan& plan,
+                                  const std::vector<Measured>& m) {
+  const Measured& reference = m[0];
+  const double phong_ms = median(m[1].total_ms);
+  std::vector<ReportRow> rows;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    ReportRow r;
+    r.scene = name;
+    r.config = plan.configs[i].config.label;
+    r.method = plan.configs[i].config.method;
+    r.width = m[i].image.width;
+    r.height = m[i].image.height;
+    r.triangles = m[i].stats.triangles_in;
+    r.covered_px = m[i].stats.covered_pixels;
+    r.median_ms = median(m[i].total_ms);
+    r.raster_shade_ms = median(m[i].raster_ms);
+    r.speedup_vs_phong = phong_ms / r.median_ms;
+    r.error = measure_error(m[i].image, reference.image, reference.stats.covered_pixels);
+    rows.push_back(r);
+  }
+  std::vector<TimeError> by_rmse, by_max;
+  for (const ReportRow& r : rows) {
+    by_rmse.push_back({r.median_ms, r.error.rmse_lsb});
+    by_max.push_back({r.median_ms, r.error.max_abs_lsb});
+  }
+  const std::vector<bool> front_rmse = pareto_front(by_rmse), front_max = pareto_front(by_max);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    rows[i].pareto_rmse = front_rmse[i];
+    rows[i].pareto_max = front_max[i];
+  }
+  return rows;
+}
+
+Rgb8 background_rgb8(const Scene& scene) {
+  Rgb8 out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = static_cast<uint8_t>(std::clamp(scene.background[c], 0.0f, 1.0f) * 255.0f + 0.5f);
+  return out;
+}
+
+// Heat maps of the `count` configurations with the largest RMSE among those off by more than
+// 1 LSB somewhere (an error of one step is rounding, and its map says nothing).
+void write_heat_maps(const fs::path& out, const Scene& scene, std::vector<ReportRow>& rows,
+                     const std::vector<Measured>& m, int count) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].error.max_abs_lsb > 1) order.push_back(i);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return rows[a].error.rmse_lsb > rows[b].error.rmse_lsb; });
+  if (order.size() > static_cast<std::size_t>(count)) order.resize(count);
+  for (std::size_t i : order) {
+    const fs::path rel = fs::path("heatmaps") / (file_stem(rows[i].scene) + "--" + file_stem(rows[i].config) + ".png");
+    fs::create_directories(out / rel.parent_path());
+    write_image(error_heat_map(m[i].image, m[0].image, background_rgb8(scene)), out / rel);
+    rows[i].heat_map = rel.string();
+  }
+}
+
+// Runs `argv` and returns its exit code (127 if it could not be started).
+int run_program(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid;
+  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0) return 127;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return 127;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+// Draws the plots with tools/report_plots.py; returns "" or why there are none. Tries the
+// python3 on PATH, then Debian's (python3-matplotlib installs there, and a PATH may put
+// another Python first).
+std::string draw_plots(const fs::path& out) {
+  const fs::path script = find_near_program("tools") / "report_plots.py";
+  if (!fs::is_regular_file(script))
+    return "tools/report_plots.py was not found near the program; results.csv holds every figure.";
+  bool python_found = false;
+  for (const char* python : {"python3", "/usr/bin/python3"}) {
+    const int code = run_program({python, script.string(), (out / "results.csv").string(), out.string()});
+    if (code == 0) return "";
+    if (code == 127) continue;
+    python_found = true;
+    if (code != kPlotsNoMatplotlib)
+      return "the plot script failed (exit code " + std::to_string(code) + "); results.csv holds every figure.";
+  }
+  return python_found ? "matplotlib is not installed (Debian: apt-get install python3-matplotlib); "
+                        "results.csv holds every figure."
+                      : "python3 is not installed; results.csv holds every figure.";
+}
+
+}  // namespace
+
+int run_report(const ReportCommand& cmd) {
+  if (cmd.frames < 1 || cmd.frames > kMaxFrames)
+    throw InputError("--frames", "expected 1 to " + std::to_string(kMaxFrames) + ", got " + std::to_string(cmd.frames));
+  if (cmd.heat_maps < 0 || cmd.heat_maps > kMaxHeatMaps)
+    throw InputError("--heat-maps", "expected 0 to " + std::to_string(kMaxHeatMaps) + ", got " +
+                                        std::to_string(cmd.heat_maps));
+  RenderOptions common;
+  common.threads = cmd.threads;
+  validate(common);
+  select_isa(cmd.isa);
+  const Plan plan = plan_configs(cmd);
+  if (cmd.list_configs) {
+    for (const PlannedConfig& p : plan.configs) std::printf("measured  %s\n", p.config.label.c_str());
+    for (const SkippedConfig& s : plan.skipped) std::printf("skipped   %s  (%s)\n", s.config.c_str(), s.reason.c_str());
+    return 0;
+  }
+
+  std::vector<fs::path> inputs(cmd.scenes.begin(), cmd.scenes.end());
+  if (inputs.empty()) inputs = default_report_inputs(cmd.models);
+  const std::vector<SceneInput> scene_inputs = expand_scene_inputs(inputs);
+  if (scene_inputs.empty()) throw InputError("report", "no scene or mesh files in the given directories");
+  const fs::path out = cmd.out;
+  check_out_dir(out);
+  // Every scene is read before anything is rendered or written: a bad one stops the run at once.
+  std::vector<Scene> scenes;
+  double total_cost = 0;
+  for (const SceneInput& in : scene_inputs) {
+    scenes.push_back(load_report_scene(in));
+    total_cost += (cmd.frames + 1.0) * double(plan.configs.size()) * frame_cost(scenes.back());
+  }
+  fs::create_directories(out);
+
+  RunInfo run{cpu_model(), active_isa(), build_commit(), utc_now(), 0, cmd.frames, load_average()};
+  std::vector<ReportRow> rows;
+  {
+    Progress progress(total_cost, stderr, ::isatty(STDERR_FILENO) != 0);
+    for (std::size_t s = 0; s < scenes.size(); ++s) {
+      const std::string& name = scene_inputs[s].name;
+      const std::vector<Measured> m = measure_scene(name, scenes[s], plan, cmd.frames, progress);
+      run.threads = m[0].stats.threads;
+      std::vector<ReportRow> scene = scene_rows(name, plan, m);
+      write_heat_maps(out, scenes[s], scene, m, cmd.heat_maps);
+      for (ReportRow& r : scene) r.plot = (fs::path("plots") / (file_stem(name) + ".png")).string();
+      rows.insert(rows.end(), scene.begin(), scene.end());
+    }
+  }
+
+  run.load_end = load_average();
+  write_text_file(out / "results.csv", results_csv(run, rows));
+  write_text_file(out / "results.json", results_json(run, rows, plan.skipped));
+  std::string plots_note = "not asked for (--no-plots).";
+  if (!cmd.no_plots) {
+    fs::create_directories(out / "plots");
+    plots_note = draw_plots(out);
+  }
+  if (!plots_note.empty()) {
+    for (ReportRow& r : rows) r.plot.clear();
+    if (!cmd.no_plots) std::fprintf(stderr, "fastshade: report: no plots: %s\n", plots_note.c_str());
+  }
+  write_text_file(out / "summary.md", summary_markdown(run, rows, plan.skipped, plots_note));
+  std::printf("%s: %zu scenes x %zu configurations (%zu not in this build), median of %d frames, "
+              "%d threads, %s\n",
+              (out / "summary.md").string().c_str(), scenes.size(), plan.configs.size(),
+              plan.skipped.size(), cmd.frames, run.threads, run.isa.c_str());
+  return 0;
+}
+
+}  // namespace fastshade
