@@ -100,8 +100,9 @@ bool table_has(std::string_view line) {
 }
 
 TEST(ReportConfigs, TableCoversEveryOptionWorthKnowing) {
-  for (const std::string& brdf : brdf_names())
+  for (const std::string& brdf : brdf_names()) {
     if (brdf != "exact") EXPECT_TRUE(table_has("phong --brdf " + brdf)) << brdf;
+  }
   for (const char* normals : {"adaptive", "equal-angle"})
     EXPECT_TRUE(table_has(std::string("phong --normals ") + normals)) << normals;
   for (const char* e : {"0.5", "1", "2", "4"})
