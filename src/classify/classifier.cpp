@@ -99,6 +99,7 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
       };
       lt.cos_negligible = cos_below(kNegligible * p.spec_threshold);
       lt.cos_share = cos_below(p.spec_threshold / double(k.lights.size()));
+      lt.cos_alone = cos_below(p.spec_threshold);
       t.lights.push_back(lt);
       brightest += glm::dvec3(light.color * m.kd);
     }
@@ -168,6 +169,18 @@ Classification Classifier::classify(const ClassifyInput& in, int material) const
   const NormalCone cone(in.n);
   const NormalCone* cheap = cone.cos_half > 0.0 && !in.local_viewer ? &cone : nullptr;
   Classification out;
+  // A vertex whose own specular term reaches the threshold decides at once: the drawn
+  // normals include the vertex normals.
+  for (std::size_t i = 0; i < m.lights.size(); ++i) {
+    const dvec3 h(shade_.lights[i].h_view);
+    const double c_vertex = std::max({glm::dot(in.n[0], h), glm::dot(in.n[1], h), glm::dot(in.n[2], h)});
+    if (!in.local_viewer && m.lights[i].spec_weight > 0.0 && c_vertex >= m.lights[i].cos_alone) {
+      out.path = ShadePath::Specular;
+      out.specular_bound = m.lights[i].spec_weight * std::pow(std::min(c_vertex, 1.0), m.shininess);
+      out.lights_with_highlight = uint64_t(1) << std::min<std::size_t>(i, 63);
+      return out;
+    }
+  }
   Bounds spec = specular(in, m, cheap);
   bool spec_exact = !cheap;
   if (spec.specular >= params_.spec_threshold && !spec_exact) {
