@@ -13,17 +13,7 @@ case "$mode" in render|test) ;; *) echo "usage: bash tools/dev.sh render|test" >
 packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev libopenmesh-dev
           libopenimageio-dev libhwy-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
           libcli11-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "installing: ${missing[*]}" >&2
-  sudo_cmd=()
-  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >&2
-fi
+bash tools/ensure_packages.sh "${packages[@]}"
 
 jobs=$(nproc)
 if [ ! -f build/build.ninja ]; then
