@@ -114,9 +114,8 @@ void run_scene(const std::filesystem::path& scene_path, const Args& args) {
     const double gl_ms = median(gl.wall_ms), fs_ms = median(fs.wall_ms);
     std::printf("| %s | %lld | %s | %d | %s | %s | %.2f | %s | %s | %s | %.2f | %.2f | %.1f |\n",
                 name.c_str(), triangles, method.c_str(), args.threads, time_cell(gl.wall_ms).c_str(),
-                time_cell(fs.wall_ms).c_str(), gl_ms / fs_ms,
-                error_cell(gl_error).c_str(), error_cell(fs_error).c_str(), error_cell(between).c_str(),
-                median(gl.cpu_ms) / gl_ms,
+                time_cell(fs.wall_ms).c_str(), gl_ms / fs_ms, error_cell(gl_error).c_str(),
+                error_cell(fs_error).c_str(), error_cell(between).c_str(), median(gl.cpu_ms) / gl_ms,
                 median(fs.cpu_ms) / fs_ms, read_ms);
     std::fflush(stdout);
     if (!args.images.empty()) {
@@ -130,7 +129,7 @@ int run(const Args& args) {
   if (!args.images.empty()) check_output_path(args.images / "probe.png");
   const peer::EglContext context(args.threads);
   std::printf("GL_RENDERER: %s\nGL_VERSION: %s\nthreads: %d (fastshade --threads, LP_NUM_THREADS); %d timed "
-              "frames each after one warm-up, alternating, medians\n\n",
+              "frames each after one warm-up, alternating; medians (fastest in brackets)\n\n",
               context.renderer().c_str(), context.version().c_str(), args.threads, args.frames);
   std::printf(
       "| mesh | triangles | method | threads | llvmpipe ms: median (min) | fastshade ms | "
