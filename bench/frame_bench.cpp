@@ -78,7 +78,7 @@ void BM_Frame(benchmark::State& state, std::string mesh, std::string method) {
 
 void register_all() {
   for (const char* mesh : {"bunny.ply", "dragon_871k.ply"})
-    for (const char* method : {"phong", "gouraud"})
+    for (const char* method : {"phong", "gouraud", "auto"})
       benchmark::RegisterBenchmark((std::string("frame/") + mesh + "/" + method).c_str(), BM_Frame,
                                    std::string(mesh), std::string(method))
           ->Arg(1)

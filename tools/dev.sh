@@ -15,17 +15,7 @@ packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev lib
           libcli11-dev)
 # Optional, not installed here: python3-matplotlib draws `fastshade report`'s plots
 # (tools/report_plots.py, tools/results.sh); without it the report writes its tables and says so.
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "installing: ${missing[*]}" >&2
-  sudo_cmd=()
-  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >&2
-fi
+bash tools/ensure_packages.sh "${packages[@]}"
 
 jobs=$(nproc)
 if [ ! -f build/build.ninja ]; then

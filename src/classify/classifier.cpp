@@ -69,13 +69,14 @@ struct Classifier::NormalCone {
     if (!(len > 0.0)) return;
     axis = sum / len;
     cos_half = std::min({glm::dot(axis, n[0]), glm::dot(axis, n[1]), glm::dot(axis, n[2])});
+    sin_half = std::sqrt(std::max(0.0, 1.0 - cos_half * cos_half));
   }
-  double max_dot(const dvec3& x) const {  // x unit
+  double max_dot(const dvec3& x) const {  // x unit: cos(max(0, angle(axis, x) - half))
     const double ca = glm::dot(axis, x);
     if (ca >= cos_half) return 1.0;
-    return ca * cos_half + std::sqrt(std::max(0.0, 1.0 - ca * ca)) *
-                               std::sqrt(std::max(0.0, 1.0 - cos_half * cos_half));
+    return ca * cos_half + std::sqrt(std::max(0.0, 1.0 - ca * ca)) * sin_half;
   }
+  double sin_half = 0.0;
 };
 
 namespace {
@@ -93,9 +94,12 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
       lt.spec_weight = max_channel(light.color * m.ks);
       lt.diffuse_weight = max_channel(light.color * m.kd);
       // weight * c^n < kNegligible * threshold  <=>  c < (kNegligible * threshold / weight)^(1/n)
-      lt.cos_negligible = lt.spec_weight > 0.0
-                              ? std::pow(kNegligible * p.spec_threshold / lt.spec_weight, 1.0 / m.shininess_d)
-                              : 2.0;
+      auto cos_below = [&](double term) {  // weight * c^n < term  <=>  c < (term / weight)^(1/n)
+        return lt.spec_weight > 0.0 ? std::pow(term / lt.spec_weight, 1.0 / m.shininess_d) : 2.0;
+      };
+      lt.cos_negligible = cos_below(kNegligible * p.spec_threshold);
+      lt.cos_share = cos_below(p.spec_threshold / double(k.lights.size()));
+      lt.cos_alone = cos_below(p.spec_threshold);
       t.lights.push_back(lt);
       brightest += glm::dvec3(light.color * m.kd);
     }
@@ -113,9 +117,15 @@ Classifier::Bounds Classifier::specular(const ClassifyInput& in, const MaterialT
     const LightView& light = shade_.lights[i];
     const double c_max = cone ? cone->max_dot(dvec3(light.h_view))
                               : max_cos_nh(in, dvec3(light.l_view), dvec3(light.h_view));
+    // Where the term is small its exact value does not matter, only a bound: no pow. The cone
+    // bound is only a first look: a term that may reach its share of the threshold is left
+    // to the exact bounds (returned as infinite).
     double spec = 0.0;
-    if (c_max > lt.cos_negligible) spec = lt.spec_weight * std::pow(std::min(c_max, 1.0), m.shininess);
-    else if (c_max > 0.0) spec = kNegligible * params_.spec_threshold;
+    if (c_max <= 0.0) spec = 0.0;
+    else if (c_max <= lt.cos_negligible) spec = kNegligible * params_.spec_threshold;
+    else if (cone && c_max < lt.cos_share) spec = params_.spec_threshold / double(m.lights.size());
+    else if (cone) spec = HUGE_VAL;
+    else spec = lt.spec_weight * std::pow(std::min(c_max, 1.0), m.shininess);
     b.specular += spec;
     if (spec >= params_.spec_threshold) b.lights_with_highlight |= uint64_t(1) << std::min<std::size_t>(i, 63);
   }
@@ -159,6 +169,18 @@ Classification Classifier::classify(const ClassifyInput& in, int material) const
   const NormalCone cone(in.n);
   const NormalCone* cheap = cone.cos_half > 0.0 && !in.local_viewer ? &cone : nullptr;
   Classification out;
+  // A vertex whose own specular term reaches the threshold decides at once: the drawn
+  // normals include the vertex normals.
+  for (std::size_t i = 0; i < m.lights.size(); ++i) {
+    const dvec3 h(shade_.lights[i].h_view);
+    const double c_vertex = std::max({glm::dot(in.n[0], h), glm::dot(in.n[1], h), glm::dot(in.n[2], h)});
+    if (!in.local_viewer && m.lights[i].spec_weight > 0.0 && c_vertex >= m.lights[i].cos_alone) {
+      out.path = ShadePath::Specular;
+      out.specular_bound = m.lights[i].spec_weight * std::pow(std::min(c_vertex, 1.0), m.shininess);
+      out.lights_with_highlight = uint64_t(1) << std::min<std::size_t>(i, 63);
+      return out;
+    }
+  }
   Bounds spec = specular(in, m, cheap);
   bool spec_exact = !cheap;
   if (spec.specular >= params_.spec_threshold && !spec_exact) {

@@ -59,6 +59,8 @@ class Classifier {
   struct LightTerms {
     double spec_weight;    // max channel of ks * light colour
     double cos_negligible; // N.H below this: the term is under kNegligible * threshold
+    double cos_share;      // N.H below this: the term is under threshold / lights
+    double cos_alone;      // N.H at or above this: the term alone reaches the threshold
     double diffuse_weight; // max channel of kd * light colour
   };
   struct MaterialTerms {

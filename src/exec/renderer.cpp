@@ -161,9 +161,10 @@ struct Renderer::Impl {
     image.rgb.resize(std::size_t(image.width) * image.height * 3);
     StageTimes t;
     BackEndCounts back_end;
+    int objects_culled = 0;
     arena.execute([&] {
       const auto t0 = Clock::now();
-      run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
+      objects_culled = run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
       const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());
       tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
         const uint32_t first = static_cast<uint32_t>(c * limits::kTrianglesPerChunk);
@@ -201,7 +202,7 @@ struct Renderer::Impl {
       for (int p = 1; p < kShadePathCount; ++p)
         stats.paths.push_back({kShadePathNames[p], tally.triangles[p], back_end.path_pixels[p]});
     stats.left_out = left_out_report(geometry, frame.shade, options,
-                                     {classified ? &tally : nullptr, back_end, stats.tiles_total, 0});
+                                     {classified ? &tally : nullptr, back_end, stats.tiles_total, objects_culled});
     if (times) *times = t;
     return image;
   }

@@ -34,11 +34,16 @@ inline constexpr uint8_t kOutcodeMask = 0x3F;
 inline constexpr uint8_t kNeedsClip = 0x40;
 inline constexpr uint8_t kNonFinite = 0x80;
 
+// Bit i: outside clip plane i (left, right, bottom, top, near, far).
+inline uint8_t frustum_outcode(const glm::vec4& v) {
+  return static_cast<uint8_t>((v.x < -v.w) | (v.x > v.w) << 1 | (v.y < -v.w) << 2 | (v.y > v.w) << 3 |
+                              (v.z < -v.w) << 4 | (v.z > v.w) << 5);
+}
+
 inline uint8_t vertex_flags(const glm::vec4& v, const Viewport& vp) {
   if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w)))
     return kNonFinite;
-  const uint8_t outcode = (v.x < -v.w) | (v.x > v.w) << 1 | (v.y < -v.w) << 2 | (v.y > v.w) << 3 |
-                          (v.z < -v.w) << 4 | (v.z > v.w) << 5;
+  const uint8_t outcode = frustum_outcode(v);
   const bool inside = v.z >= -v.w && v.z <= v.w && std::fabs(v.x) <= vp.guard_x * v.w &&
                       std::fabs(v.y) <= vp.guard_y * v.w;
   return outcode | (inside ? 0 : kNeedsClip);

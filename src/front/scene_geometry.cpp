@@ -1,5 +1,7 @@
 #include "front/scene_geometry.h"
 
+#include <glm/common.hpp>
+
 #include <limits>
 
 #include "fastshade/error.h"
@@ -35,6 +37,13 @@ SceneGeometry flatten_scene(const Scene& scene) {
     range.vertex_count = static_cast<uint32_t>(mesh->positions.size());
     range.model = o.model;
     range.material = o.material;
+    if (!mesh->positions.empty()) {
+      range.box_min = range.box_max = mesh->positions.front();
+      for (const glm::vec3& p : mesh->positions) {
+        range.box_min = glm::min(range.box_min, p);
+        range.box_max = glm::max(range.box_max, p);
+      }
+    }
     g.objects.push_back(range);
     g.positions.insert(g.positions.end(), mesh->positions.begin(), mesh->positions.end());
     g.normals.insert(g.normals.end(), mesh->normals.begin(), mesh->normals.end());

@@ -1,5 +1,6 @@
 #include "front/vertex_stage.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -46,7 +47,21 @@ ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool
   return k;
 }
 
-void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Viewport& vp,
+namespace {
+
+// All eight corners of the box outside one clip plane: nothing inside can be seen.
+bool outside_frustum(const glm::mat4& model_to_clip, const glm::vec3& lo, const glm::vec3& hi) {
+  uint8_t common = kOutcodeMask;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+    common &= frustum_outcode(model_to_clip * glm::vec4(p, 1.0f));
+  }
+  return common != 0;
+}
+
+}  // namespace
+
+int run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Viewport& vp,
                       const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
                       AttrArrays& attrs) {
   const std::size_t n = g.positions.size();
@@ -56,8 +71,14 @@ void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Vie
   attrs.n_view.resize(needs.normal ? n : 0);
   attrs.color.resize(needs.color ? n : 0);
   attrs.pos_view.resize(needs.position ? n : 0);
+  int culled = 0;
   for (const ObjectRange& o : g.objects) {
     const glm::mat4 model_view = xf.view * o.model;
+    if (outside_frustum(xf.proj * model_view, o.box_min, o.box_max)) {
+      std::fill_n(out.flags.begin() + o.first_vertex, o.vertex_count, kOutcodeMask);
+      ++culled;
+      continue;
+    }
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(model_view));
     const glm::mat4 proj = xf.proj;
     const MaterialConstants& material = shade.materials[o.material];
@@ -83,6 +104,7 @@ void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Vie
           }
         });
   }
+  return culled;
 }
 
 }  // namespace fastshade

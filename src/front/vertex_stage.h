@@ -42,8 +42,11 @@ struct ProjectedVertices {
   }
 };
 
-// Parallel over vertices. Outputs are resized; their capacity is reused across frames.
-void run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, const Viewport& vp,
+// Parallel over vertices. Outputs are resized; their capacity is reused across frames. An
+// object whose bounding box lies wholly outside one frustum plane is not transformed: its
+// vertices get every outcode bit, so setup culls its triangles at once. Returns how many
+// objects were left out so.
+int run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, const Viewport& vp,
                       const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
                       AttrArrays& attrs);
 

@@ -28,18 +28,17 @@ struct TriangleNormals {
 
 // The segment length (16, 8, 4, 2 or 1 px) for a whole triangle, decided once at setup.
 //
-// A segment of L pixels whose normal turns through an angle a errs, linearly interpolated,
-// by at most a^2 / 8 * max |d^2 f / d angle^2|. The normal turns by the part of d(n/w)/dx
-// across n/w, over |n/w|, per pixel (n/w is affine in screen space), estimated from the
-// vertices and the centre with 25 % margin. For the Blinn-Phong colour with
-// c = N.H <= c_max on the triangle,
-//   |d^2/d angle^2 (kd max(N.L, 0))| <= kd,   |d^2/d angle^2 c^n| <= n c_max^(n-2) (n + 1),
-// with c_max from the edges' closed-form maxima (NOTES.md section 2) or 1 when H lies inside
-// the cone of the vertex normals; summed over lights weighted by |colour|. The longest L whose
-// bound is within tol wins. One fixed length per object fails badly (NOTES.md: 19 LSB seen);
-// this adapts to the triangle's curvature and to how near it is to a highlight. A decision
-// per 16-px block was measured first and cost more than the Phong evaluations it saved on
-// small triangles (3x phong's time on the 4K spot frame).
+// A segment of L pixels errs, linearly interpolated, by at most L^2 / 8 * max |f''| along
+// the row, plus kd |u'| L / 4 where the terminator's kink crosses it. |f''| is bounded over
+// the whole triangle from the normal's turn rate |u'| (the part of d(n/w)/dx across the
+// normals, over the smallest |n/w| anywhere on the triangle), the rate's change |u''|, and the
+// colour's derivatives at c_max = max N.H (edges' closed-form maxima, NOTES.md section 2, or
+// 1 when H lies inside the normals' cone); summed over lights weighted by |colour|
+// (derivation in hybrid_step.cpp; docs/CLASSIFIER.md says what the earlier estimate missed).
+// The longest L whose bound is within tol wins. One fixed length per object fails badly
+// (NOTES.md: 19 LSB seen); this adapts to the triangle's curvature and to how near it is to a
+// highlight. A decision per 16-px block was measured first and cost more than the Phong
+// evaluations it saved on small triangles (3x phong's time on the 4K spot frame).
 int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, float tol);
 
 // --max-error in LSB to the interpolation tolerance in colour units: half an LSB goes to the
