@@ -25,6 +25,7 @@ struct RenderOptions {
   std::string spec_method = "hybrid";  // auto: the kernel of triangles that may show a highlight
   std::string classifier = "bound";    // auto: bound (error-checked) | paper (the literal rule)
   std::string to_string() const;
+  bool operator==(const RenderOptions&) const = default;
 };
 
 // Throws InputError ("--tile: ...") if an option is out of range or names no method.

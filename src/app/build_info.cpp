@@ -1,5 +1,6 @@
 #include "app/build_info.h"
 
+#include <ctime>
 #include <fstream>
 
 #include "build_info_generated.h"
@@ -26,6 +27,15 @@ double load_average() {
   double one_minute = -1;
   loadavg >> one_minute;
   return loadavg ? one_minute : -1;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
 }
 
 }  // namespace fastshade

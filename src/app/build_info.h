@@ -1,4 +1,4 @@
-// What a measurement ran on: the build's commit and this machine's CPU, for report rows.
+// What a measurement ran on: the build's commit, this machine's CPU and load, and when.
 #pragma once
 #include <string>
 
@@ -14,5 +14,8 @@ std::string cpu_model();
 // The 1-minute load average from /proc/loadavg (-1 where there is none): on a shared machine,
 // how many other runnable threads competed with a measurement.
 double load_average();
+
+// Now, as "2026-11-22T14:03:00Z".
+std::string utc_now();
 
 }  // namespace fastshade

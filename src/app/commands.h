@@ -26,9 +26,15 @@ int run_compare(const std::string& a, const std::string& b, bool json);
 int run_info(const std::string& mesh, bool json);
 int run_brdf_table(const std::string& isa);
 
+// The options `render` runs with once `render_cli` has parsed: the flags given on the command
+// line (bound to `from_flags`) over its --config file's options over the defaults. A --method
+// given without classifying drops the config's auto-only keys. Throws InputError naming the
+// config file and key for a bad config.
+RenderOptions resolve_render_options(const CLI::App& render_cli, const RenderOptions& from_flags);
+
 // Reads render flags ("--method", "hybrid", "--max-error", "2") into RenderOptions exactly as
-// `fastshade render` would, so `report` knows every flag `render` knows. Throws InputError
-// naming the flags for an unknown flag or a bad value; does not validate().
+// `fastshade render` would (--config included), so `report` knows every flag `render` knows.
+// Throws InputError naming the flags for an unknown flag or a bad value; does not validate().
 using RenderFlagsParser = std::function<RenderOptions(const std::vector<std::string>& flags)>;
 // The parser of the `render` subcommand, whose options are bound to `bound`.
 RenderFlagsParser render_flags_parser(CLI::App& render_cli, RenderOptions& bound);
@@ -44,5 +50,22 @@ struct ReportCommand {
   RenderFlagsParser parse_render_flags;
 };
 int run_report(const ReportCommand& cmd);
+
+struct TuneCommand {
+  std::vector<std::string> scenes;  // files or directories; empty: the repository's scenes/
+  std::string output;               // the config file written
+  double max_error = 1.0;           // budget: worst max error against reference, 8-bit steps
+  double max_pct_over_1lsb = 100;   // budget: worst share of covered pixels > 1 LSB (100: none)
+  double min_gain_pct = 3;          // the defaults are kept unless beaten by more (tune_rule.h)
+  std::vector<std::string> methods = {"auto", "phong", "gouraud", "hybrid"};
+  std::vector<int> tiles = {8, 16, 32, 64, 128, 256};
+  std::vector<double> thresholds;   // auto's --spec-threshold values; empty: from max_error
+  std::vector<std::string> spec_methods = {"hybrid", "phong"};
+  std::vector<std::string> classifiers = {"bound"};
+  int threads = 0, frames = 20;
+  std::string isa = "best";
+};
+// Prints the table; exit 0 with the config written, 1 if no candidate is within the budget.
+int run_tune(const TuneCommand& cmd);
 
 }  // namespace fastshade

@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
   r->add_option("--classifier", render.options.classifier,
                 "auto: bound (error-checked, default) or paper (highlight -> specular, rest -> Gouraud)");
   r->add_flag("--explain", render.explain, "print the shading plan: paths, and what was left out");
+  r->add_option("--config", "render options from a JSON file (fastshade tune writes one); flags given "
+                            "here override its keys")
+      ->type_name("FILE");
   r->add_option("--brdf", render.options.brdf,
                 "specular lobe: exact, cosk:K, schlick, schlick-pow2, quadratic, quadratic-fit, "
                 "poly2, poly3 (docs/KERNELS.md)");
@@ -78,6 +81,31 @@ int main(int argc, char** argv) {
   rep->add_flag("--list-configs", report.list_configs, "print what would be measured, and exit");
   report.parse_render_flags = render_flags_parser(*r, render.options);
 
+  TuneCommand tune;
+  CLI::App* t = app.add_subcommand("tune", "the fastest configuration within an error budget, as a config file");
+  t->add_option("scenes", tune.scenes, "scene files, meshes, or directories of them; default: scenes/");
+  t->add_option("-o,--output", tune.output, "config file to write (JSON, for render --config)")->required();
+  t->add_option("--max-error", tune.max_error, "budget: max error against reference on every scene, 8-bit steps")
+      ->capture_default_str();
+  t->add_option("--max-pct-over-1lsb", tune.max_pct_over_1lsb,
+                "budget: % of covered pixels off by more than 1 LSB on every scene (100: no limit)")
+      ->capture_default_str();
+  t->add_option("--min-gain", tune.min_gain_pct,
+                "keep render's defaults unless the fastest within budget beats them by more than this %")
+      ->capture_default_str();
+  t->add_option("--methods", tune.methods, "methods swept")->delimiter(',')->capture_default_str();
+  t->add_option("--tiles", tune.tiles, "tile sizes swept")->delimiter(',')->capture_default_str();
+  t->add_option("--thresholds", tune.thresholds,
+                "auto: --spec-threshold values swept (default: 0.5, 1 and 2 x --max-error / 255)")->delimiter(',');
+  t->add_option("--spec-methods", tune.spec_methods, "auto: --spec-method values swept")->delimiter(',')
+      ->capture_default_str();
+  t->add_option("--classifiers", tune.classifiers, "auto: --classifier values swept")->delimiter(',')
+      ->capture_default_str();
+  t->add_option("--threads", tune.threads, "worker threads (0 = all)")->capture_default_str();
+  t->add_option("--frames", tune.frames, "timed frames per candidate and scene after one warm-up")
+      ->capture_default_str();
+  t->add_option("--isa", tune.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -89,11 +117,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    if (*r) return run_render(render);
+    if (*r) {
+      render.options = resolve_render_options(*r, render.options);
+      return run_render(render);
+    }
     if (*c) return run_compare(image_a, image_b, compare_json);
     if (*i) return run_info(mesh, info_json);
     if (*b) return run_brdf_table(table_isa);
     if (*rep) return run_report(report);
+    if (*t) return run_tune(tune);
   } catch (const InputError& e) {
     std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;

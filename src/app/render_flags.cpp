@@ -1,12 +1,34 @@
-// Render flags read through the `render` subcommand's own parser (see commands.h).
+// Render flags read through the `render` subcommand's own parser, and its --config file
+// (see commands.h).
 #include <algorithm>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
 #include "fastshade/error.h"
+#include "io/render_config.h"
+#include "shade/method.h"
 
 namespace fastshade {
+
+RenderOptions resolve_render_options(const CLI::App& render_cli, const RenderOptions& from_flags) {
+  const CLI::Option* config_flag = render_cli.get_option("--config");
+  if (config_flag->count() == 0) return from_flags;
+  const RenderConfig config = load_render_config(config_flag->as<std::string>());
+  const auto given = [&](const RenderConfigKey& key) {
+    return render_cli.get_option(std::string(key.flag))->count() > 0;
+  };
+  RenderOptions options = config.options;
+  for (const RenderConfigKey& key : kRenderConfigKeys)
+    if (given(key)) copy_option(key, from_flags, options);
+  // `--config tuned.json --method phong` compares the tuned frame with phong: the config's
+  // keys for the classifier would make validate() refuse phong, so they go with its method.
+  const Method* method = find_method(options.method);
+  if (method && !method->classifies)
+    for (const RenderConfigKey& key : kRenderConfigKeys)
+      if (key.classifying_only && !given(key)) copy_option(key, RenderOptions{}, options);
+  return options;
+}
 
 RenderFlagsParser render_flags_parser(CLI::App& render_cli, RenderOptions& bound) {
   return [&render_cli, &bound](const std::vector<std::string>& flags) {
@@ -20,7 +42,7 @@ RenderFlagsParser render_flags_parser(CLI::App& render_cli, RenderOptions& bound
     } catch (const CLI::ParseError& e) {
       throw InputError("fastshade render", e.what());
     }
-    return bound;
+    return resolve_render_options(render_cli, bound);
   };
 }
 

@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <ctime>
-#include <memory>
 
 #include "app/build_info.h"
 #include "app/commands.h"
@@ -18,6 +16,7 @@
 #include "app/report_configs.h"
 #include "app/report_output.h"
 #include "app/report_scenes.h"
+#include "app/timing_rounds.h"
 #include "exec/isa.h"
 #include "fastshade/error.h"
 #include "io/atomic_file.h"
@@ -32,18 +31,8 @@ namespace {
 
 constexpr int kMaxFrames = 1000;
 constexpr int kMaxHeatMaps = 100;
-// The progress bar's cost model: a frame costs its pixels plus this many per triangle. From
-// docs/PERFORMANCE.md's 1080p frames: bunny (69k triangles) 25 ms, dragon (871k) 100 ms, so a
-// triangle costs about as much as 10 pixels.
-constexpr double kTriangleCostPx = 10;
 // tools/report_plots.py exits with this when matplotlib cannot be imported.
 constexpr int kPlotsNoMatplotlib = 3;
-
-double frame_cost(const Scene& scene) {
-  double triangles = 0;
-  for (const Object& o : scene.objects) triangles += static_cast<double>(o.mesh->triangles.size());
-  return double(scene.width) * scene.height + kTriangleCostPx * triangles;
-}
 
 struct PlannedConfig {
   ReportConfig config;
@@ -111,54 +100,6 @@ std::string file_stem(const std::string& name) {
   for (char& c : s)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '_';
   return s;
-}
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-struct Measured {
-  Image image;
-  RenderStats stats;
-  std::vector<double> total_ms, raster_ms;
-};
-
-// Renders every configuration in rounds (round 0 warms up, untimed): one frame of each, then the
-// next round, starting one configuration later each time, so a machine that slows down during a
-// scene slows every configuration alike and none always runs right after the same other one.
-std::vector<Measured> measure_scene(const std::string& name, const Scene& scene, const Plan& plan,
-                                    int frames, Progress& progress) {
-  const double cost = frame_cost(scene);
-  std::vector<std::unique_ptr<Renderer>> renderers;
-  for (const PlannedConfig& p : plan.configs) renderers.push_back(std::make_unique<Renderer>(scene, p.options));
-  const std::size_t n = renderers.size();
-  std::vector<Measured> m(n);
-  for (int round = 0; round <= frames; ++round) {
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t i = (k + static_cast<std::size_t>(round)) % n;
-      StageTimes t;
-      m[i].image = renderers[i]->render_frame(&t);
-      if (round > 0) {
-        m[i].total_ms.push_back(t.total);
-        m[i].raster_ms.push_back(t.raster_shade);
-      }
-      const std::string when = round == 0 ? "warm-up" : "frame " + std::to_string(round) + "/" + std::to_string(frames);
-      progress.advance(cost, name + " " + when + ": " + plan.configs[i].config.label);
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) m[i].stats = renderers[i]->last_stats();
-  return m;
 }
 
 std::vector<ReportRow> scene_rows(const std::string& name, const Plan& plan,
@@ -290,9 +231,12 @@ int run_report(const ReportCommand& cmd) {
   std::vector<ReportRow> rows;
   {
     Progress progress(total_cost, stderr, ::isatty(STDERR_FILENO) != 0);
+    std::vector<RenderOptions> options;
+    std::vector<std::string> labels;
+    for (const PlannedConfig& p : plan.configs) options.push_back(p.options), labels.push_back(p.config.label);
     for (std::size_t s = 0; s < scenes.size(); ++s) {
       const std::string& name = scene_inputs[s].name;
-      const std::vector<Measured> m = measure_scene(name, scenes[s], plan, cmd.frames, progress);
+      const std::vector<Measured> m = measure_in_rounds(name, scenes[s], options, labels, cmd.frames, progress);
       run.threads = m[0].stats.threads;
       std::vector<ReportRow> scene = scene_rows(name, plan, m);
       write_heat_maps(out, scenes[s], scene, m, cmd.heat_maps);

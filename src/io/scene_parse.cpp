@@ -1,12 +1,8 @@
 // Scene files: JSON in, a resolved Scene out (meshes loaded or built, camera framed).
 // The format is documented key by key in docs/scene-format.md.
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <functional>
 #include <map>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -20,6 +16,7 @@
 #include "fastshade/error.h"
 #include "fastshade/primitives.h"
 #include "fastshade/scene.h"
+#include "io/json_file.h"
 #include "io/json_path.h"
 #include "io/scene_camera.h"
 
@@ -320,24 +317,10 @@ Scene parse_scene(const std::string& json_text, const std::string& source,
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-  const std::string source = path.string();
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec && ec != std::errc::no_such_file_or_directory)
-    throw InputError(source, "cannot access: " + ec.message());
-  if (!std::filesystem::exists(status)) throw InputError(source, "no such scene file");
-  if (std::filesystem::is_directory(status))
-    throw InputError(source, "is a directory, expected a scene file (JSON)");
-  if (!std::filesystem::is_regular_file(status))
-    throw InputError(source, "not a regular file, expected a scene file (JSON)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(source, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(source, "read error");
+  const std::string text = read_json_file_text(path, "scene file");
   std::filesystem::path base_dir = path.parent_path();
   if (base_dir.empty()) base_dir = ".";
-  return parse_scene(text.str(), source, base_dir);
+  return parse_scene(text, path.string(), base_dir);
 }
 
 }  // namespace fastshade

@@ -1,7 +1,6 @@
 // `fastshade report`: its pure helpers (Pareto front, heat map, NaN suspects, progress line),
 // its table of configurations, and the command on a tiny scene (files, columns, bad usage).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -20,6 +19,7 @@
 #include "app/report_scenes.h"
 #include "fastshade/error.h"
 #include "shade/brdf.h"
+#include "support/cli_fixture.h"
 
 namespace fastshade {
 namespace {
@@ -166,58 +166,29 @@ TEST(ReportScenes, FindsTheRepositoryScenesNearTheProgram) {
 }
 
 // The command itself, run as users run it.
-struct CommandRun {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string read_file(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-class ReportCli : public ::testing::Test {
+class ReportCli : public test::CliFixture {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fastshade_report_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    CliFixture::SetUp();
     // Tiny: 48x32, one sphere with a sharp highlight so gouraud misses it.
-    std::ofstream(dir_ / "tiny.json") << R"({"image": {"width": 48, "height": 32},
+    write("tiny.json", R"({"image": {"width": 48, "height": 32},
       "camera": {"fit": true}, "lights": [{"direction": [0.3, 0.4, 1]}],
       "materials": {"m": {"diffuse": 0.6, "specular": 0.6, "shininess": 60}},
-      "objects": [{"primitive": "icosphere", "subdivisions": 1}]})";
+      "objects": [{"primitive": "icosphere", "subdivisions": 1}]})");
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CommandRun report(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(FASTSHADE_BINARY) + " report " + args + " >" + out.string() +
-                            " 2>" + err.string() + " </dev/null";
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
-  }
+  test::Outcome report(const std::string& args) { return run("report " + args + " </dev/null"); }
   void expect_usage_error(const std::string& args, const std::string& needle) {
-    const CommandRun r = report(args);
-    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos) << needle << " not in " << r.err;
-    EXPECT_FALSE(fs::exists(dir_ / "out")) << args;
+    expect_bad_input("report " + args + " </dev/null", needle);
   }
-
-  fs::path dir_;
 };
 
 TEST_F(ReportCli, TinySceneWritesRowsWithEveryColumn) {
   const fs::path out = dir_ / "out";
-  const CommandRun r = report((dir_ / "tiny.json").string() + " --out " + out.string() +
+  const test::Outcome r = report((dir_ / "tiny.json").string() + " --out " + out.string() +
                        " --config gouraud --frames 1 --threads 1 --no-plots");
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
-  std::istringstream csv(read_file(out / "results.csv"));
+  std::istringstream csv(test::slurp(out / "results.csv"));
   std::string header;
   std::getline(csv, header);
   std::string expected_header;
@@ -231,7 +202,7 @@ TEST_F(ReportCli, TinySceneWritesRowsWithEveryColumn) {
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, 3);  // reference, phong, gouraud
 
-  const nlohmann::json j = nlohmann::json::parse(read_file(out / "results.json"));
+  const nlohmann::json j = nlohmann::json::parse(test::slurp(out / "results.json"));
   ASSERT_EQ(j["rows"].size(), 3u);
   const nlohmann::json& ref = j["rows"][0];
   EXPECT_EQ(ref["config"], "reference");
@@ -256,14 +227,14 @@ TEST_F(ReportCli, TinySceneWritesRowsWithEveryColumn) {
   // The worst configuration's heat map, written by fastshade; the summary names it.
   const std::string map = gouraud["heat_map"];
   EXPECT_TRUE(fs::exists(out / map)) << map;
-  const std::string summary = read_file(out / "summary.md");
+  const std::string summary = test::slurp(out / "summary.md");
   EXPECT_NE(summary.find("| gouraud |"), std::string::npos);
   EXPECT_NE(summary.find(map), std::string::npos);
   EXPECT_NE(summary.find("No plots"), std::string::npos);  // --no-plots, and the summary says so
 }
 
 TEST_F(ReportCli, OnlyConfigurationsOfMissingMethodsOrFlagsAreSkipped) {
-  const CommandRun r = report("--list-configs");
+  const test::Outcome r = report("--list-configs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream lines(r.out);
   int measured = 0;

@@ -1,0 +1,217 @@
+// `fastshade tune`: measures a grid of render configurations (method x tile, and for `auto`
+// x threshold x specular kernel x classifier) on a set of scenes, picks the fastest whose error
+// stays within the budget (app/tune_rule.h), prints the table and writes the choice as a config
+// file for `fastshade render --config`.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <system_error>
+
+#include "app/build_info.h"
+#include "app/commands.h"
+#include "app/format.h"
+#include "app/progress.h"
+#include "app/report_metrics.h"
+#include "app/report_scenes.h"
+#include "app/timing_rounds.h"
+#include "app/tune_output.h"
+#include "exec/isa.h"
+#include "fastshade/error.h"
+#include "io/atomic_file.h"
+#include "io/render_config.h"
+#include "shade/method.h"
+
+namespace fastshade {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxFrames = 1000;
+// --min-gain above this would keep the defaults against a candidate twice as fast: a typo.
+constexpr double kMaxGainPct = 100;
+// The default thresholds are these multiples of --max-error (8-bit steps): below the budget,
+// at it, and above it (which the bound classifier may still keep within the budget where a
+// scene's highlights are few; the table shows whether it did).
+constexpr double kThresholdsPerBudget[] = {0.5, 1.0, 2.0};
+
+struct Candidate {
+  std::string label;
+  RenderOptions options;
+};
+
+// validate()'s flag, and the tune flag that lists its values.
+constexpr std::pair<std::string_view, std::string_view> kListFlags[] = {
+    {"--method", "--methods"},       {"--tile", "--tiles"},
+    {"--spec-threshold", "--thresholds"}, {"--spec-method", "--spec-methods"},
+    {"--classifier", "--classifiers"}};
+
+void validate_candidate(const Candidate& c) {
+  try {
+    validate(c.options);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    const std::size_t colon = message.find(": ");
+    for (const auto& [flag, list] : kListFlags)
+      if (message.compare(0, colon, flag) == 0)
+        throw InputError(std::string(list), message.substr(colon + 2) + " (in \"" + c.label + "\")");
+    throw;
+  }
+}
+
+std::string label_of(const RenderOptions& o) {
+  std::string label = o.method + " --tile " + std::to_string(o.tile_px);
+  if (o.method != "auto") return label;
+  label += " --spec-threshold " + format_double("%.4g", o.spec_threshold) + " --spec-method " + o.spec_method;
+  if (o.classifier != RenderOptions{}.classifier) label += " --classifier " + o.classifier;
+  return label;
+}
+
+// The grid, without repeats, then `render`'s defaults at this budget if the grid lacks them
+// (the "× default" column's yardstick); returns the default's index in `out`.
+std::size_t plan_candidates(const TuneCommand& cmd, std::vector<Candidate>& out) {
+  RenderOptions base;
+  base.threads = cmd.threads;
+  base.isa = cmd.isa;
+  base.max_error = cmd.max_error;
+  std::vector<double> thresholds = cmd.thresholds;
+  if (thresholds.empty())
+    for (double k : kThresholdsPerBudget) thresholds.push_back(k * cmd.max_error / 255.0);
+  const auto add = [&](const RenderOptions& o) {
+    const bool seen = std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.options == o; });
+    if (!seen) out.push_back({label_of(o), o});
+  };
+  for (const std::string& method : cmd.methods) {
+    for (int tile : cmd.tiles) {
+      RenderOptions o = base;
+      o.method = method;
+      o.tile_px = tile;
+      if (method != "auto") {
+        add(o);
+        continue;
+      }
+      for (double threshold : thresholds)
+        for (const std::string& spec_method : cmd.spec_methods)
+          for (const std::string& classifier : cmd.classifiers) {
+            o.spec_threshold = threshold;
+            o.spec_method = spec_method;
+            o.classifier = classifier;
+            add(o);
+          }
+    }
+  }
+  for (const Candidate& c : out) validate_candidate(c);
+  add(base);
+  return static_cast<std::size_t>(
+      std::find_if(out.begin(), out.end(), [&](const Candidate& c) { return c.options == base; }) - out.begin());
+}
+
+void check_config_output(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(path.string(), "is a directory (-o)");
+  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir, ec))
+    throw InputError(path.string(), "directory '" + dir.string() + "' does not exist (-o)");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw InputError(path.string(), "directory '" + dir.string() + "' is not writable (-o)");
+}
+
+void check_usage(const TuneCommand& cmd) {
+  if (cmd.frames < 1 || cmd.frames > kMaxFrames)
+    throw InputError("--frames",
+                     "expected 1 to " + std::to_string(kMaxFrames) + ", got " + std::to_string(cmd.frames));
+  if (!(cmd.min_gain_pct >= 0 && cmd.min_gain_pct <= kMaxGainPct))
+    throw InputError("--min-gain", "expected 0 to " + format_double("%g", kMaxGainPct) + " (%), got " +
+                                       format_double("%g", cmd.min_gain_pct));
+  if (!(cmd.max_pct_over_1lsb >= 0 && cmd.max_pct_over_1lsb <= 100))
+    throw InputError("--max-pct-over-1lsb",
+                     "expected 0 to 100, got " + format_double("%g", cmd.max_pct_over_1lsb));
+  RenderOptions common;
+  common.threads = cmd.threads;
+  common.max_error = cmd.max_error;  // its range: validate() names --max-error
+  validate(common);
+  check_config_output(cmd.output);
+}
+
+// The config's keys: what was tuned and what it was measured with.
+std::vector<std::string_view> tuned_keys(const RenderOptions& o) {
+  std::vector<std::string_view> keys = {"method", "tile", "threads", "isa", "max_error"};
+  if (find_method(o.method)->classifies)
+    for (const RenderConfigKey& key : kRenderConfigKeys)
+      if (key.classifying_only) keys.push_back(key.key);
+  return keys;
+}
+
+}  // namespace
+
+int run_tune(const TuneCommand& cmd) {
+  check_usage(cmd);
+  select_isa(cmd.isa);
+  std::vector<Candidate> candidates;
+  const std::size_t default_candidate = plan_candidates(cmd, candidates);
+
+  std::vector<fs::path> inputs(cmd.scenes.begin(), cmd.scenes.end());
+  if (inputs.empty()) {
+    const fs::path scenes = find_near_program("scenes");
+    if (scenes.empty()) throw InputError("tune", "no scenes given and no scenes/ directory found near the program");
+    inputs.push_back(scenes);
+  }
+  const std::vector<SceneInput> scene_inputs = expand_scene_inputs(inputs);
+  if (scene_inputs.empty()) throw InputError("tune", "no scene or mesh files in the given directories");
+  // Every scene is read before anything is rendered: a bad one stops the run at once.
+  std::vector<Scene> scenes;
+  double total_cost = 0;
+  for (const SceneInput& in : scene_inputs) {
+    scenes.push_back(load_report_scene(in));
+    total_cost += ((cmd.frames + 1.0) * double(candidates.size()) + 1.0) * frame_cost(scenes.back());
+  }
+
+  TuneTable table;
+  table.run = {cpu_model(), active_isa(), build_commit(), utc_now(), 0, cmd.frames, load_average()};
+  table.criteria = {cmd.max_error, cmd.max_pct_over_1lsb, cmd.min_gain_pct, default_candidate};
+  std::vector<RenderOptions> options;
+  for (const Candidate& c : candidates) options.push_back(c.options), table.labels.push_back(c.label);
+  table.figures.resize(candidates.size());
+  {
+    Progress progress(total_cost, stderr, ::isatty(STDERR_FILENO) != 0);
+    for (std::size_t s = 0; s < scenes.size(); ++s) {
+      const std::string& name = scene_inputs[s].name;
+      table.scene_names.push_back(name);
+      table.scene_paths.push_back(scene_inputs[s].path.string());
+      RenderOptions yardstick = options[default_candidate];
+      yardstick.method = "reference";
+      RenderStats reference_stats;
+      const Image reference = render(scenes[s], yardstick, 1, &reference_stats);
+      progress.advance(frame_cost(scenes[s]), name + ": reference");
+      const std::vector<Measured> m = measure_in_rounds(name, scenes[s], options, table.labels, cmd.frames, progress);
+      for (std::size_t c = 0; c < m.size(); ++c) {
+        const ErrorMetrics e = measure_error(m[c].image, reference, reference_stats.covered_pixels);
+        table.figures[c].push_back({median(m[c].total_ms), e.max_abs_lsb, e.pct_covered_over_1lsb});
+      }
+      table.run.threads = m[0].stats.threads;
+    }
+  }
+  table.run.load_end = load_average();
+  table.decision = decide_tuning(table.figures, table.scene_names, table.criteria);
+  std::printf("%s", tune_table_markdown(table).c_str());
+  if (!table.decision.chosen) {
+    std::fprintf(stderr, "fastshade: tune: no candidate stays within the budget on every scene; %s not written\n",
+                 cmd.output.c_str());
+    return 1;
+  }
+  const TuneDecision& d = table.decision;
+  const Candidate& chosen = candidates[*d.chosen];
+  write_text_file(cmd.output, render_config_text(chosen.options, tuned_keys(chosen.options), tune_provenance(table)));
+  if (d.chosen == d.fastest)
+    std::printf("\n%s: %s, %.2f× the defaults' speed (geometric mean over the scenes)\n", cmd.output.c_str(),
+                chosen.label.c_str(), speedup_vs_default(table, *d.chosen));
+  else
+    std::printf("\n%s: %s: the defaults, kept: the fastest within budget, %s, is only %.1f %% faster "
+                "(--min-gain %g)\n",
+                cmd.output.c_str(), chosen.label.c_str(), candidates[*d.fastest].label.c_str(), d.fastest_gain_pct,
+                cmd.min_gain_pct);
+  return 0;
+}
+
+}  // namespace fastshade
