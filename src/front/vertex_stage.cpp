@@ -1,5 +1,6 @@
 #include "front/vertex_stage.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -7,6 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "core/limits.h"
 #include "shade/lighting.h"
 
 namespace fastshade {
@@ -19,6 +21,19 @@ ViewTransform view_transform(const Scene& scene) {
   xf.proj = glm::perspective(glm::radians(c.fovy_deg), aspect, c.near, c.far);
   return xf;
 }
+
+namespace {
+
+// The most that the float kernels' rounding of N.H (limits.h kFloatNdotHError) can move this
+// material's colour, in 8-bit steps: c^n turns an error e of c into n e at most.
+double float_specular_error_lsb(const MaterialConstants& m, const std::vector<LightView>& lights) {
+  double ks_light = 0;
+  for (const LightView& light : lights)
+    ks_light += std::max({light.color.r * m.ks.r, light.color.g * m.ks.g, light.color.b * m.ks.b});
+  return 255.0 * ks_light * m.shininess_d * limits::kFloatNdotHError;
+}
+
+}  // namespace
 
 ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb,
                               const BrdfChoice& brdf) {
@@ -40,9 +55,14 @@ ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool
     lv.color = light.color;
     k.lights.push_back(lv);
   }
-  for (const Material& m : scene.materials)
-    k.materials.push_back({m.diffuse, m.specular, static_cast<float>(m.shininess), m.shininess,
-                           make_brdf(brdf, m.shininess)});
+  for (const Material& m : scene.materials) {
+    MaterialConstants mc{m.diffuse, m.specular, static_cast<float>(m.shininess), m.shininess,
+                         make_brdf(brdf, m.shininess)};
+    // Only exact cos^n falls back: an approximation (--brdf) is the user's choice of error.
+    mc.shade_in_double = brdf.kind == BrdfKind::Exact &&
+                         float_specular_error_lsb(mc, k.lights) > limits::kFloatSpecularBudgetLsb;
+    k.materials.push_back(mc);
+  }
   return k;
 }
 
@@ -74,9 +94,7 @@ void run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Vie
             if (needs.color) {
               const glm::vec3 v_view = shade.local_viewer ? glm::normalize(-glm::vec3(pos_view))
                                                           : glm::vec3(0, 0, 1);
-              attrs.color[i] = glm::clamp(
-                  blinn_phong<float>(n_view, v_view, !shade.local_viewer, material, shade), 0.0f,
-                  1.0f);
+              attrs.color[i] = vertex_color(n_view, v_view, !shade.local_viewer, material, shade);
             }
           }
         });

@@ -8,8 +8,6 @@
 
 namespace fastshade {
 
-namespace {
-
 void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
@@ -51,8 +49,6 @@ void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     }
   });
 }
-
-}  // namespace
 
 AttrNeeds reference_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};
