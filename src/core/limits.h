@@ -48,6 +48,17 @@ inline constexpr int kTrianglesPerChunk = 4096;
 // to 8 bits then differs by at most ceil(max_error) steps.
 inline constexpr double kAutoFloatReserveLsb = 0.01;
 
+// Largest error of N.H as the float kernels compute it, for unit N and H at c = N.H near 1, in
+// units of u = 2^-24 (docs/STABILITY.md, "B1"): |N| after the Newton 1/sqrt is 1 within 5.5u,
+// |H| (glm::normalize) within 3.5u, and the three-term dot product rounds within 3u: 12u.
+// Through c^n it becomes a relative error of n times that: 0.3 % at n = 1e4, 72 % at 1e6.
+inline constexpr double kFloatNdotHError = 12.0 * 0x1p-24;
+// The share of phong's 1-LSB bound that this rounding may take (the rest covers the normal's
+// direction and the lobe's own rounding, far smaller): a material whose lights can move
+// ks n kFloatNdotHError past half a step is shaded in double instead (docs/STABILITY.md,
+// "Fallbacks"). With one white light and ks = 0.5 that is n > 5,480.
+inline constexpr double kFloatSpecularBudgetLsb = 0.5;
+
 // Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.
 inline constexpr double kMaxShininess = 1e6;
 

@@ -21,6 +21,10 @@ struct MaterialConstants {
   float shininess;
   double shininess_d;
   BrdfParams lobe;  // the frame's specular approximation, fitted to this shininess
+  // Float Blinn-Phong cannot hold 1 LSB for this material (docs/STABILITY.md, "Fallbacks"):
+  // per-pixel methods draw its triangles with the reference, Gouraud lights its vertices in
+  // double.
+  bool shade_in_double = false;
 };
 
 struct ShadeConstants {

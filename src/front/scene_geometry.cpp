@@ -1,12 +1,35 @@
 #include "front/scene_geometry.h"
 
-#include <glm/common.hpp>
-
+#include <cmath>
 #include <limits>
+#include <string>
+
+#include <glm/geometric.hpp>
 
 #include "fastshade/error.h"
 
 namespace fastshade {
+
+namespace {
+
+// Appends the mesh's normals scaled to unit length (in double). A mesh built in memory reaches
+// the renderer without load_mesh's checks: a zero or non-finite normal would normalise to NaN
+// in the vertex stage, and one shorter than 1e-19 or longer than 1e19 to zero or infinity in
+// float, all shading as garbage. The first is an error, the others are scaled here; a normal
+// already unit to float rounding (within 1e-6: a float-normalised vector is within 3e-7) is
+// kept bit for bit.
+void append_unit_normals(const Mesh& mesh, std::vector<glm::vec3>& out) {
+  constexpr double kUnitSlack = 1e-6;
+  for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
+    const glm::dvec3 n(mesh.normals[i]);
+    const double len = glm::length(n);
+    if (!(std::isfinite(len) && len > 0.0))
+      throw InputError(mesh.source, "vertex " + std::to_string(i) + ": normal is zero or not finite");
+    out.push_back(std::fabs(len - 1.0) <= kUnitSlack ? mesh.normals[i] : glm::vec3(n / len));
+  }
+}
+
+}  // namespace
 
 SceneGeometry flatten_scene(const Scene& scene) {
   SceneGeometry g;
@@ -46,7 +69,7 @@ SceneGeometry flatten_scene(const Scene& scene) {
     }
     g.objects.push_back(range);
     g.positions.insert(g.positions.end(), mesh->positions.begin(), mesh->positions.end());
-    g.normals.insert(g.normals.end(), mesh->normals.begin(), mesh->normals.end());
+    append_unit_normals(*mesh, g.normals);
     for (const auto& t : mesh->triangles) {
       g.triangles.push_back({t[0] + range.first_vertex, t[1] + range.first_vertex,
                              t[2] + range.first_vertex});

@@ -8,6 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "core/limits.h"
 #include "shade/lighting.h"
 
 namespace fastshade {
@@ -20,6 +21,19 @@ ViewTransform view_transform(const Scene& scene) {
   xf.proj = glm::perspective(glm::radians(c.fovy_deg), aspect, c.near, c.far);
   return xf;
 }
+
+namespace {
+
+// The most that the float kernels' rounding of N.H (limits.h kFloatNdotHError) can move this
+// material's colour, in 8-bit steps: c^n turns an error e of c into n e at most.
+double float_specular_error_lsb(const MaterialConstants& m, const std::vector<LightView>& lights) {
+  double ks_light = 0;
+  for (const LightView& light : lights)
+    ks_light += std::max({light.color.r * m.ks.r, light.color.g * m.ks.g, light.color.b * m.ks.b});
+  return 255.0 * ks_light * m.shininess_d * limits::kFloatNdotHError;
+}
+
+}  // namespace
 
 ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb,
                               const BrdfChoice& brdf) {
@@ -41,9 +55,14 @@ ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool
     lv.color = light.color;
     k.lights.push_back(lv);
   }
-  for (const Material& m : scene.materials)
-    k.materials.push_back({m.diffuse, m.specular, static_cast<float>(m.shininess), m.shininess,
-                           make_brdf(brdf, m.shininess)});
+  for (const Material& m : scene.materials) {
+    MaterialConstants mc{m.diffuse, m.specular, static_cast<float>(m.shininess), m.shininess,
+                         make_brdf(brdf, m.shininess)};
+    // Only exact cos^n falls back: an approximation (--brdf) is the user's choice of error.
+    mc.shade_in_double = brdf.kind == BrdfKind::Exact &&
+                         float_specular_error_lsb(mc, k.lights) > limits::kFloatSpecularBudgetLsb;
+    k.materials.push_back(mc);
+  }
   return k;
 }
 
@@ -95,11 +114,9 @@ int run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const View
             if (needs.color) {
               const glm::vec3 v_view = shade.local_viewer ? glm::normalize(-glm::vec3(pos_view))
                                                           : glm::vec3(0, 0, 1);
-              const glm::vec3 lit =
-                  needs.diffuse_color
-                      ? blinn_phong<float, false>(n_view, v_view, !shade.local_viewer, material, shade)
-                      : blinn_phong<float>(n_view, v_view, !shade.local_viewer, material, shade);
-              attrs.color[i] = glm::clamp(lit, 0.0f, 1.0f);
+              attrs.color[i] = needs.diffuse_color
+                                   ? vertex_color<false>(n_view, v_view, !shade.local_viewer, material, shade)
+                                   : vertex_color<true>(n_view, v_view, !shade.local_viewer, material, shade);
             }
           }
         });

@@ -200,6 +200,18 @@ float eval_brdf_one(const BrdfParams& p, float c_in) {
 
 double cos_power(double c, double n) { return c > 0 ? std::pow(std::min(c, 1.0), n) : 0.0; }
 
+double brdf_max_error(const BrdfParams& p, double n, int points) {
+  std::vector<float> c;
+  for (int i = 0; i <= points; ++i) c.push_back(float(std::cos(std::numbers::pi / 2 * i / points)));
+  for (int i = 0; i <= points; ++i)
+    c.push_back(float(std::cos(std::min(std::numbers::pi / 2, 10.0 / std::sqrt(n) * i / points))));
+  std::vector<float> out(c.size());
+  eval_brdf(p, c.data(), out.data(), c.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) worst = std::max(worst, std::fabs(double(out[i]) - cos_power(c[i], n)));
+  return worst;
+}
+
 std::string BrdfChoice::name() const {
   switch (kind) {
     case BrdfKind::Exact: return "exact";

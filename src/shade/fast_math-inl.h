@@ -49,8 +49,8 @@ HWY_INLINE V FastExp2(D d, V y) {
   return hn::BitCast(d, hn::Add(hn::BitCast(di, p), scale));
 }
 
-// 1/sqrt(x) for finite x > 0 without the divider: the integer-shift estimate (relative
-// error 3.4e-2) and three Newton steps y (1.5 - 0.5 x y^2), 2e-3, 5e-6, then float rounding.
+// 1/sqrt(x) for finite x >= fast_math::kMinInvSqrtInput (FLT_MIN) without the divider: the
+// integer-shift estimate (relative error 3.4e-2) and three Newton steps y (1.5 - 0.5 x y^2), 2e-3, 5e-6, then float rounding.
 // Not the hardware estimate: its precision differs between 128-, 256- and 512-bit vectors
 // (12 vs 14 bits), and a pixel must get the same bits whatever width shaded it.
 template <class D, class V = hn::Vec<D>>

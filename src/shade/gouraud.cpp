@@ -43,9 +43,7 @@ void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
             k.local_viewer ? glm::normalize(-frame.vertex(entry, t.attr[i], &AttrArrays::pos_view))
                            : glm::vec3(0, 0, 1);
         const glm::vec3 n_view = frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
-        color = glm::clamp(
-            blinn_phong<float, kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k), 0.0f,
-            1.0f);
+        color = vertex_color<kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k);
       }
       for (int c = 0; c < 3; ++c) c_over_w[i][c] = double(color[c]) * t.inv_w[i];
     }

@@ -117,12 +117,11 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
         const SetupTriangle& t = frame.triangle(entry);
         TriangleNormals normals;
         const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
-        normals.centre_view = glm::vec3(0.0f);
         for (int i = 0; i < 3; ++i) {
           normals.n[i] = flip * frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
           normals.inv_w[i] = t.inv_w[i];
-          if constexpr (kLocal)
-            normals.centre_view += frame.vertex(entry, t.attr[i], &AttrArrays::pos_view) / 3.0f;
+          normals.pos_view[i] =
+              kLocal ? frame.vertex(entry, t.attr[i], &AttrArrays::pos_view) : glm::vec3(0.0f);
         }
         step = hybrid_triangle_step(in, normals, k.hybrid_tolerance);
       },

@@ -18,12 +18,12 @@ inline int segment_end(int xb, int j, int step, int xl, int xr) {
 }
 
 // What the step decision needs of a triangle beyond its planes: unit vertex normals (view
-// space, flipped for two-sided back faces), 1/w at the vertices and, for a local viewer, the
-// centre's view-space position.
+// space, flipped for two-sided back faces), 1/w at the vertices and, for a local viewer, their
+// view-space positions.
 struct TriangleNormals {
   glm::vec3 n[3];
   float inv_w[3];
-  glm::vec3 centre_view;
+  glm::vec3 pos_view[3];
 };
 
 // The segment length (16, 8, 4, 2 or 1 px) for a whole triangle, decided once at setup.
@@ -35,6 +35,8 @@ struct TriangleNormals {
 // colour's derivatives at c_max = max N.H (edges' closed-form maxima, NOTES.md section 2, or
 // 1 when H lies inside the normals' cone); summed over lights weighted by |colour|
 // (derivation in hybrid_step.cpp; docs/CLASSIFIER.md says what the earlier estimate missed).
+// A local viewer's H moves too: by the view direction's spread over the triangle and its turn
+// along x (docs/STABILITY.md, "B2").
 // The longest L whose bound is within tol wins. One fixed length per object fails badly
 // (NOTES.md: 19 LSB seen); this adapts to the triangle's curvature and to how near it is to a
 // highlight. A decision per 16-px block was measured first and cost more than the Phong

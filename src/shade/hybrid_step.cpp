@@ -9,6 +9,40 @@
 
 namespace fastshade {
 
+namespace {
+
+// How a local viewer's V (towards the eye) moves over the triangle: V_i at the vertices, the
+// centre's, the largest angle from the centre's to a vertex's (the directions to a planar
+// triangle's points form the spherical triangle of the V_i, so a vertex is farthest), and its
+// turn along x: |q x dq/dx| / |q|^2 for q = p/w, affine like n/w, with |q| = |p| / w >= 1
+// (w = -z), so at most max_i |q_i x dq/dx| (the affine cross product peaks at a vertex).
+struct ViewMotion {
+  dvec3 v[3], centre;
+  double spread = 0, turn_per_px = 0;
+};
+
+ViewMotion view_motion(const PhongSpanInput& in, const TriangleNormals& tri) {
+  ViewMotion m;
+  const dvec3 dq_dx(in.p[0].gx, in.p[1].gx, in.p[2].gx);
+  dvec3 centre(0.0);
+  for (int i = 0; i < 3; ++i) {
+    m.v[i] = glm::normalize(-dvec3(tri.pos_view[i]));
+    centre += dvec3(tri.pos_view[i]) / 3.0;
+    const dvec3 q = dvec3(tri.pos_view[i]) * double(tri.inv_w[i]);
+    m.turn_per_px = std::max(m.turn_per_px, glm::length(glm::cross(q, dq_dx)));
+  }
+  m.centre = glm::normalize(-centre);
+  for (const dvec3& v : m.v)
+    m.spread = std::max(m.spread, std::acos(std::clamp(glm::dot(m.centre, v), -1.0, 1.0)));
+  return m;
+}
+
+// Below this |L + V| the half vector turns faster than any segment can follow (it is undefined
+// where the light sits exactly behind the viewer): per-pixel Phong.
+constexpr double kMinHalfVectorLength = 1e-3;
+
+}  // namespace
+
 int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, float tol) {
   constexpr int kBlock = limits::kSeedBlockPx;
   if (!(tol > 0)) return 1;
@@ -16,9 +50,9 @@ int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, f
   // u = q / |q|: u' = P_u g / |q| and u'' = -[u' (u.g) + u (u'.g) + u' (u.g)] / |q|, so
   // |u''| <= 3 |u'| |g| / |q|. Writing q = (sum beta_i / w_i) m with m = sum lambda_i n_i
   // (lambda: perspective-correct barycentrics), |q| >= min_i(1 / w_i) min |m|, a bound for
-  // the whole triangle that holds where the normals nearly cancel too. Only g's part across
-  // u turns u: with g = s a + r (a the normals' cone axis, half-angle h, r across a),
-  // |P_u g| <= |s| sin h + |r|.
+  // the whole triangle that holds at folds of antiparallel normals too, where q shrinks. Only
+  // g's part across u turns u: with g = s a + r (a the normals' cone axis, half-angle h, r
+  // across a), |P_u g| <= |s| sin h + |r|.
   const dvec3 n_d[3] = {dvec3(tri.n[0]), dvec3(tri.n[1]), dvec3(tri.n[2])};
   const double q_min = std::min({tri.inv_w[0], tri.inv_w[1], tri.inv_w[2]}) * min_length_over_triangle(n_d);
   if (!(q_min > 0.0)) return 1;
@@ -36,40 +70,58 @@ int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, f
   }
   const double turn = g_across / q_min;          // |u'|, radians per pixel, at most
   const double stretch = glm::length(g) / q_min;  // |g| / |q|, at most
-  if (!(turn > 0.0)) return kBlock;
   // The colour's second derivative along x: f = C(u), f'' = u'^T (d2C) u' + dC . u''.
   // Diffuse kd max(u.L, 0): |dC| <= kd, d2C = 0, plus a kink where the terminator crosses,
-  // which linear interpolation misses by at most kd |u'| L / 4 (first order in L). Specular
-  // ks c^n, c = u.H <= c_max: |dC| <= ks n c^(n-1), |d2C| <= ks n (n-1) c^(n-2); below
-  // n = 2, c^n has unbounded curvature at c = 0: per pixel there.
+  // which linear interpolation misses by at most kd a / 4 for a segment turning by a (first
+  // order). Specular ks c^n, c = u.H <= c_max: |dC| <= ks n c^(n-1), |d2C| <= ks n (n-1)
+  // c^(n-2); below n = 2, c^n has no bounded curvature at c = 0 but is Lipschitz with
+  // constant <= 1 in the angle: a kink term ks a / 2. A local viewer's H moves too: by V's
+  // spread over the triangle (lowering the angle c_max comes from) and by its turn along x,
+  // which adds to the angle N turns against H (docs/STABILITY.md, "B2").
   const MaterialConstants& m = *in.material;
   const double kd = std::max({m.kd.r, m.kd.g, m.kd.b}), ks = std::max({m.ks.r, m.ks.g, m.ks.b});
   const double n = m.shininess_d;
-  double bend = 0.0, slope = 0.0, kink = 0.0;  // weights of |u'|^2, |dC| and the kink
+  double bend = 0.0, slope = 0.0, kink = 0.0, h_turn = 0.0;  // weights of |u'|^2, |dC|, kinks
+  ViewMotion view;
+  if (in.shade->local_viewer) view = view_motion(in, tri);
   for (const LightView& light : in.shade->lights) {
     const double weight = std::max({light.color.r, light.color.g, light.color.b});
-    glm::vec3 h = light.h_view;
-    // A local viewer's H at the triangle's centre stands for all of it (H turns far less
-    // than the normal across a triangle: it follows the view direction).
-    if (in.shade->local_viewer) h = glm::normalize(light.l_view + glm::normalize(-tri.centre_view));
-    const double c_max = std::min(max_dot_over_triangle(n_d, dvec3(h)), 1.0);
+    const dvec3 l(light.l_view);
+    dvec3 h(light.h_view);
+    double h_spread = 0.0;
+    if (in.shade->local_viewer) {
+      // H = (L + V) / |L + V| moves by at most V's motion over |L + V|, smallest where L.V is.
+      const double lv_min = -max_dot_over_triangle(view.v, -l);
+      const double half_length = std::sqrt(std::max(0.0, 2.0 + 2.0 * lv_min));
+      if (!(half_length > kMinHalfVectorLength)) return 1;
+      h = glm::normalize(l + view.centre);
+      h_spread = view.spread / half_length;
+      h_turn = std::max(h_turn, view.turn_per_px / half_length);
+    }
+    const double c_centre = std::clamp(max_dot_over_triangle(n_d, h), -1.0, 1.0);
+    const double c_max = std::cos(std::max(0.0, std::acos(c_centre) - h_spread));
     if (ks > 0.0 && c_max > 0.0) {
-      if (n < 2.0) return 1;
-      bend += weight * ks * n * (n - 1.0) * std::pow(c_max, n - 2.0);
-      slope += weight * ks * n * std::pow(c_max, n - 1.0);
+      if (n < 2.0) {
+        kink += weight * ks * 0.5;
+      } else {
+        bend += weight * ks * n * (n - 1.0) * std::pow(c_max, n - 2.0);
+        slope += weight * ks * n * std::pow(c_max, n - 1.0);
+      }
     }
     slope += weight * kd;
-    double lo = 1.0, hi = -1.0;
+    double lo = 1.0, hi = -1.0;  // the lit hemisphere is convex: vertices decide
     for (const dvec3& ni : n_d) {
-      lo = std::min(lo, glm::dot(ni, dvec3(light.l_view)));
-      hi = std::max(hi, glm::dot(ni, dvec3(light.l_view)));
+      lo = std::min(lo, glm::dot(ni, l));
+      hi = std::max(hi, glm::dot(ni, l));
     }
-    if (lo < 0.0 && hi > 0.0) kink += weight * kd;
+    if (lo < 0.0 && hi > 0.0) kink += weight * kd * 0.25;
   }
-  const double second = bend * turn * turn + slope * 3.0 * turn * stretch;  // |f''| per px^2
-  // A segment of L pixels errs by at most |f''| L^2 / 8 + kink |u'| L / 4.
+  const double rel_turn = turn + h_turn;  // N against H, radians per pixel
+  if (!(rel_turn > 0.0)) return kBlock;
+  const double second = bend * rel_turn * rel_turn + slope * 3.0 * turn * stretch;  // |f''|
+  // A segment of L pixels errs by at most |f''| L^2 / 8 + kink * (its turn).
   for (int step = kBlock; step >= 2; step /= 2)
-    if (second * step * step / 8.0 + kink * turn * step / 4.0 <= tol) return step;
+    if (second * step * step / 8.0 + kink * rel_turn * step <= tol) return step;
   return 1;
 }
 

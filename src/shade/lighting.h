@@ -48,6 +48,19 @@ inline Vec3T<T> blinn_phong(const Vec3T<T>& n_view, const Vec3T<T>& v_view, bool
   return c;
 }
 
+// A vertex's lit colour for Gouraud, clamped to [0, 1]: in float, or in double for a material
+// whose highlight float cannot hold (MaterialConstants::shade_in_double).
+// kSpecular = false: without the specular term (`auto`'s Gouraud path).
+template <bool kSpecular = true>
+inline glm::vec3 vertex_color(const glm::vec3& n_view, const glm::vec3& v_view, bool infinite_viewer,
+                              const MaterialConstants& m, const ShadeConstants& k) {
+  const glm::vec3 c =
+      m.shade_in_double && kSpecular
+          ? glm::vec3(blinn_phong<double, kSpecular>(glm::dvec3(n_view), glm::dvec3(v_view), infinite_viewer, m, k))
+          : blinn_phong<float, kSpecular>(n_view, v_view, infinite_viewer, m, k);
+  return glm::clamp(c, 0.0f, 1.0f);
+}
+
 // The output transfer: clamp to [0, 1], optional sRGB curve, round(255 v) (halves up).
 template <typename T>
 inline uint8_t quantize(T v, bool srgb) {

@@ -5,6 +5,9 @@
 namespace fastshade {
 
 AttrNeeds reference_needs(const ShadeConstants& shade);
+// The yardstick's drawer: also the float methods' fallback for a material whose highlight
+// float cannot hold (MaterialConstants::shade_in_double), decided per triangle at setup.
+void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& target);
 DrawTriangleFn select_reference(const ShadeConstants& shade);
 std::string reference_refuses(const RenderOptions& options);
 

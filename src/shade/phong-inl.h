@@ -13,6 +13,7 @@
 
 #include "shade/brdf-inl.h"
 #include "shade/method.h"
+#include "shade/methods.h"
 #include "shade/span_loop-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -24,11 +25,11 @@ HWY_INLINE V Dot(V ax, V ay, V az, V bx, V by, V bz) {
   return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
 }
 
-// Scales (x, y, z) to unit length; a zero vector stays zero.
+// Scales (x, y, z) to unit length; a zero vector (or one too short for InvSqrt) becomes zero.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void Normalize(D d, V& x, V& y, V& z) {
   const V len2 = Dot<D>(x, y, z, x, y, z);
-  const V inv = hn::IfThenElseZero(hn::Gt(len2, hn::Zero(d)), InvSqrt(d, len2));
+  const V inv = hn::IfThenElseZero(hn::Ge(len2, hn::Set(d, fast_math::kMinInvSqrtInput)), InvSqrt(d, len2));
   x = hn::Mul(x, inv);
   y = hn::Mul(y, inv);
   z = hn::Mul(z, inv);
@@ -125,9 +126,16 @@ HWY_INLINE auto PhongShade(D d, const PhongSpanInput& in, const LaneOffsets<D>& 
   return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
 }
 
+// A material float cannot shade within 1 LSB (docs/STABILITY.md, "Fallbacks") is drawn by the
+// reference; the flag is only ever set for exact cos^n, and only its highlight needs it.
+HWY_INLINE bool ShadesInDouble(const Frame& frame, uint32_t entry) {
+  return frame.shade.materials[frame.triangle(entry).material].shade_in_double;
+}
+
 // `phong` for one binned triangle in a tile; kSpecular = false: `auto`'s per-pixel diffuse.
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
 void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  if (kSpecular && ShadesInDouble(frame, entry)) return draw_reference(frame, entry, tt);
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
@@ -149,7 +157,8 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
 }
 
 // The frame of the span-run methods (hybrid, --normals): triangles narrower than min_width_px
-// (whole box: every tile decides alike) take per-pixel Phong; the others walk rows through the
+// (whole box: every tile decides alike) take per-pixel Phong, and materials shaded in double
+// the reference (through DrawPhong); the others walk rows through the
 // whole triangle, tile rows only, because a row's covered run [xl, xr] fixes where segment or
 // block ends go, whatever tile this is. on_setup(in) runs once, when the first run is found
 // (planes are ready then); run(in, xl, xr, py, x0, x1, row) shades the tile's part [x0, x1].
@@ -157,7 +166,7 @@ template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, typena
 HWY_INLINE void DrawByRowRuns(const Frame& frame, uint32_t entry, const TileTarget& tt,
                               int min_width_px, OnSetup&& on_setup, Run&& run) {
   const SetupTriangle& whole = frame.triangle(entry);
-  if (whole.px_max[0] - whole.px_min[0] + 1 < min_width_px) {
+  if (whole.px_max[0] - whole.px_min[0] + 1 < min_width_px || (kSpecular && ShadesInDouble(frame, entry))) {
     DrawPhong<kLocal, kSrgb, kBrdf, kSpecular>(frame, entry, tt);
     return;
   }

@@ -8,8 +8,6 @@
 
 namespace fastshade {
 
-namespace {
-
 void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   TriangleInTile tri;
   if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
@@ -47,12 +45,10 @@ void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& tt) {
       n = len > 0 ? n / len : glm::dvec3(0.0);
       const glm::dvec3 v_view = k.local_viewer ? glm::normalize(-pos) : glm::dvec3(0, 0, 1);
       const glm::dvec3 c = blinn_phong<double>(n, v_view, !k.local_viewer, material, k);
-      color[px] = pack_rgba(quantize(c.r, k.srgb), quantize(c.g, k.srgb), quantize(c.b, k.srgb));
+      color[px] = pack_rgba(quantize(c.r, k.srgb), quantize(c.g, k.srgb), quantize(c.b, k.srgb)) ^ tt.alpha_xor;
     }
   });
 }
-
-}  // namespace
 
 AttrNeeds reference_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};

@@ -48,7 +48,7 @@ void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, 
 PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o) {
   float nx = plane_at(in.n[0], o), ny = plane_at(in.n[1], o), nz = plane_at(in.n[2], o);
   const float len2 = (nx * nx + ny * ny) + nz * nz;
-  const float inv_len = len2 > 0.0f ? fast_math::inv_sqrt(len2) : 0.0f;
+  const float inv_len = len2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(len2) : 0.0f;
   return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o);
 }
 
@@ -61,7 +61,7 @@ PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, fl
     const float w = 1.0f / plane_at(in.inv_w, o);
     vx = -(plane_at(in.p[0], o) * w), vy = -(plane_at(in.p[1], o) * w), vz = -(plane_at(in.p[2], o) * w);
     const float v2 = (vx * vx + vy * vy) + vz * vz;
-    const float inv = v2 > 0.0f ? fast_math::inv_sqrt(v2) : 0.0f;
+    const float inv = v2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(v2) : 0.0f;
     vx *= inv, vy *= inv, vz *= inv;
   }
   PhongColor rgb{{k.ambient.r, k.ambient.g, k.ambient.b}};
@@ -70,7 +70,7 @@ PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, fl
     if (k.local_viewer) {
       hx = light.l_view.x + vx, hy = light.l_view.y + vy, hz = light.l_view.z + vz;
       const float h2 = (hx * hx + hy * hy) + hz * hz;
-      const float inv = h2 > 0.0f ? fast_math::inv_sqrt(h2) : 0.0f;
+      const float inv = h2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(h2) : 0.0f;
       hx *= inv, hy *= inv, hz *= inv;
     }
     const float ndl = (nx * light.l_view.x + ny * light.l_view.y) + nz * light.l_view.z;

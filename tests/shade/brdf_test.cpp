@@ -53,18 +53,7 @@ TEST(Brdf, EveryOutputIsFiniteAndInUnitInterval) {
 }
 
 // Max |approximation - cos^n| over gamma in [0, pi/2], on a grid dense in the lobe.
-double max_error(const BrdfParams& p, double n) {
-  std::vector<float> c;
-  for (int i = 0; i <= 4000; ++i) c.push_back(float(std::cos(std::numbers::pi / 2 * i / 4000)));
-  for (int i = 0; i <= 4000; ++i)
-    c.push_back(float(std::cos(std::min(std::numbers::pi / 2, 10.0 / std::sqrt(n) * i / 4000))));
-  std::vector<float> out(c.size());
-  eval_brdf(p, c.data(), out.data(), c.size());
-  double worst = 0;
-  for (std::size_t i = 0; i < c.size(); ++i)
-    worst = std::max(worst, std::fabs(out[i] - cos_power(c[i], n)));
-  return worst;
-}
+double max_error(const BrdfParams& p, double n) { return brdf_max_error(p, n, 4000); }
 
 TEST(Brdf, ErrorAgainstCosPowerWithinDocumentedBounds) {
   // docs/KERNELS.md's table (fastshade brdf-table), with 5-10 % slack: the bound for n = 1,
