@@ -177,6 +177,15 @@ inline Bound derive_bound(const MethodConfig& config, const Scene& scene, const 
           b = {std::floor(o.max_error + 0.5 + 255.0 * float_error), Status::Holds};
         }
         break;
+      case BoundRule::Classified: {
+        // Diffuse paths: below E - 0.01 LSB before rounding, so ceil(E) after (never in double);
+        // the specular path: B2 as hybrid, or 0 where the material falls back to double.
+        const double specular = k.materials[i].shade_in_double
+                                    ? 0.0
+                                    : std::floor(o.max_error + 0.5 + 255.0 * float_error);
+        b = {std::max(std::ceil(o.max_error), specular), Status::Holds};
+        break;
+      }
       case BoundRule::VertexLighting:
         // With the vertices lit in double (the fallback) their colours carry no rounding term.
         b.lsb = rounded_lsb(t.lipschitz * geo.normal_spread_rad + float_error -

@@ -15,6 +15,8 @@ enum class BoundRule {
   PerPixelFloat,   // Blinn-Phong per pixel in float (phong, any --brdf): STABILITY.md "B1"
   ErrorBudget,     // honours --max-error E (hybrid, phong --normals adaptive | equal-angle): "B2"
   VertexLighting,  // lit vertices interpolated (gouraud): Lipschitz over the normals' spread, "B3"
+  Classified,      // auto: its diffuse paths within E before rounding (docs/CLASSIFIER.md), its
+                   // specular path B2; "B4"
 };
 
 struct MethodConfig {
@@ -57,6 +59,8 @@ inline const std::vector<MethodConfig>& method_configs() {
         config("hybrid --max-error 1", "hybrid", R::ErrorBudget, {.max_error = 1}),
         config("hybrid --max-error 2", "hybrid", R::ErrorBudget, {.max_error = 2}),
         config("hybrid --max-error 4", "hybrid", R::ErrorBudget, {.max_error = 4}),
+        config("auto", "auto", R::Classified, {.max_error = 1}),
+        config("auto --max-error 2", "auto", R::Classified, {.max_error = 2}),
     };
     for (const std::string& brdf : brdf_names())
       if (brdf != "exact") c.push_back(config("phong --brdf " + brdf, "phong", R::PerPixelFloat, {.brdf = brdf}));
