@@ -10,9 +10,11 @@ cd "$(dirname "$0")/.."
 mode=${1:-}
 case "$mode" in render|test) ;; *) echo "usage: bash tools/dev.sh render|test" >&2; exit 2 ;; esac
 
+# python3-matplotlib draws `fastshade bench scaling`'s plot; without it the command still
+# writes its CSV and JSON.
 packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev libopenmesh-dev
           libopenimageio-dev libhwy-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
-          libcli11-dev)
+          libcli11-dev python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -19,4 +19,16 @@ int run_compare(const std::string& a, const std::string& b, bool json);
 int run_info(const std::string& mesh, bool json);
 int run_brdf_table(const std::string& isa);
 
+// `fastshade bench scaling` (app/scaling.h): thread and tile sweep plus the load-balance model.
+struct ScalingCommand {
+  std::string scene;                   // empty: the embedded default scene
+  int max_threads = 0;                 // 0: the hardware's threads and one more (oversubscribed)
+  std::string tiles = "16,32,64,128";  // tile sizes, comma-separated
+  int frames = 10;                     // timed frames per point, after one warm-up
+  std::string method = "phong";
+  std::string out_dir = ".";           // scaling.csv, scaling.json, scaling.png
+  bool plot = true;
+};
+int run_bench_scaling(const ScalingCommand& cmd);
+
 }  // namespace fastshade

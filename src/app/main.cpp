@@ -51,6 +51,19 @@ int main(int argc, char** argv) {
   CLI::App* b = app.add_subcommand("brdf-table", "error and cost of every BRDF approximation");
   b->add_option("--isa", table_isa, "SIMD target: scalar, sse4, avx2, avx512, best");
 
+  ScalingCommand scaling;
+  CLI::App* bench = app.add_subcommand("bench", "benchmarks")->require_subcommand(1);
+  CLI::App* sc = bench->add_subcommand(
+      "scaling", "speed-up per stage over thread counts and tile sizes, and a load-balance model");
+  sc->add_option("scene", scaling.scene, "scene JSON; omitted: the default scene");
+  sc->add_option("--max-threads", scaling.max_threads,
+                 "most threads (default: hardware threads + 1, one oversubscribed point)");
+  sc->add_option("--tiles", scaling.tiles, "tile sizes, comma-separated (default 16,32,64,128)");
+  sc->add_option("--frames", scaling.frames, "timed frames per point after one warm-up (default 10)");
+  sc->add_option("--method", scaling.method, "shading method (default phong)");
+  sc->add_option("--out", scaling.out_dir, "directory for scaling.csv, .json, .png (default .)");
+  sc->add_flag("!--no-plot", scaling.plot, "skip scaling.png");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -66,6 +79,7 @@ int main(int argc, char** argv) {
     if (*c) return run_compare(image_a, image_b, compare_json);
     if (*i) return run_info(mesh, info_json);
     if (*b) return run_brdf_table(table_isa);
+    if (*sc) return run_bench_scaling(scaling);
   } catch (const InputError& e) {
     std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;

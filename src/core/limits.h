@@ -41,6 +41,15 @@ inline constexpr int kSierpinskiMinPx = 32;
 // (one counter per tile), small enough that 2 threads get many chunks on a 70k mesh.
 inline constexpr int kTrianglesPerChunk = 4096;
 
+// Bin plan: tiles per parallel block. Each block reads kBinPlanTiles consecutive counters
+// (1 KiB) of every chunk in turn, so its walk over chunks stays sequential in memory; a 1080p
+// frame with 16 px tiles (8160 tiles) still makes 32 blocks for the workers.
+inline constexpr int kBinPlanTiles = 256;
+
+// Vertex stage: vertices per parallel block (TBB's grain). A vertex costs ~10 ns, so a block
+// is ~40 us: far above the cost of handing it out, and a 35k-vertex mesh still makes 9 blocks.
+inline constexpr int kVerticesPerBlock = 4096;
+
 // Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.
 inline constexpr double kMaxShininess = 1e6;
 

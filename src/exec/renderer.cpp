@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "exec/frame_profile.h"
 #include "exec/isa.h"
 #include "exec/tile_executor.h"
 #include "fastshade/error.h"
@@ -132,17 +133,22 @@ struct Renderer::Impl {
     stats.isa = active_isa();
   }
 
-  Image render(StageTimes* times) {
+  Image render(StageTimes* times, FrameProfile* profile) {
     Image image;
     image.width = frame.grid.width;
     image.height = frame.grid.height;
     image.rgb.resize(std::size_t(image.width) * image.height * 3);
     StageTimes t;
+    if (profile) profile->reset(frame.chunks.size(), frame.grid.tile_count(), geometry.positions.size());
     arena.execute([&] {
       const auto t0 = Clock::now();
-      run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
+      {
+        ItemTimer timer(profile ? &profile->vertex_stage_ns : nullptr);
+        run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
+      }
       const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());
       tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+        ItemTimer timer(profile_slot(profile, &FrameProfile::setup_chunk_ns, c));
         const uint32_t first = static_cast<uint32_t>(c * limits::kTrianglesPerChunk);
         const uint32_t last = std::min<uint32_t>(first + limits::kTrianglesPerChunk, n_tris);
         setup_chunk(geometry, vertices, frame.attrs, first, last, setup, frame.chunks[c]);
@@ -150,17 +156,26 @@ struct Renderer::Impl {
       t.front_end = ms_since(t0);
 
       const auto t1 = Clock::now();
-      tbb::parallel_for(std::size_t(0), frame.chunks.size(),
-                        [&](std::size_t c) { count_chunk_bins(frame.grid, frame.chunks[c]); });
-      plan_bins(frame);
-      tbb::parallel_for(std::size_t(0), frame.chunks.size(),
-                        [&](std::size_t c) { fill_chunk_bins(frame, static_cast<uint32_t>(c)); });
+      tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+        ItemTimer timer(profile_slot(profile, &FrameProfile::count_chunk_ns, c));
+        count_chunk_bins(frame.grid, frame.chunks[c]);
+      });
+      {
+        ItemTimer timer(profile ? &profile->plan_bins_ns : nullptr);
+        plan_bins(frame);
+      }
+      tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+        ItemTimer timer(profile_slot(profile, &FrameProfile::fill_chunk_ns, c));
+        fill_chunk_bins(frame, static_cast<uint32_t>(c));
+      });
       t.binning = ms_since(t1);
 
       const auto t2 = Clock::now();
-      const BackEndCounts counts = executor.run(frame, draw, image);
+      const BackEndCounts counts =
+          executor.run(frame, draw, image, profile ? profile->tile_ns.data() : nullptr);
       t.raster_shade = ms_since(t2);
       t.total = ms_since(t0);
+      if (profile) profile->total_ns = static_cast<uint64_t>(t.total * 1e6);
       stats.tiles_nonempty = counts.tiles_nonempty;
       stats.covered_pixels = counts.covered_pixels;
     });
@@ -181,7 +196,9 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options) {
 }
 Renderer::~Renderer() = default;
 
-Image Renderer::render_frame(StageTimes* times) { return impl_->render(times); }
+Image Renderer::render_frame(StageTimes* times, FrameProfile* profile) {
+  return impl_->render(times, profile);
+}
 RenderStats Renderer::last_stats() const { return impl_->stats; }
 
 namespace {

@@ -19,8 +19,10 @@ class TileExecutor {
  public:
   TileExecutor();
   ~TileExecutor();
-  // Runs inside the caller's task arena. `image` must already have the frame's size.
-  BackEndCounts run(const Frame& frame, DrawTriangleFn draw, Image& image);
+  // Runs inside the caller's task arena. `image` must already have the frame's size. A non-null
+  // `tile_ns` (one slot per tile) receives each tile's time (exec/frame_profile.h).
+  BackEndCounts run(const Frame& frame, DrawTriangleFn draw, Image& image,
+                    uint64_t* tile_ns = nullptr);
 
  private:
   struct Scratch;

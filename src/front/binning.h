@@ -7,8 +7,9 @@ namespace fastshade {
 // Counts one chunk's triangles per tile (into chunk.tile_counts). Parallel over chunks.
 void count_chunk_bins(const TileGrid& grid, Chunk& chunk);
 
-// Lays out frame.tile_begin and turns every chunk's counts into its write cursors. Serial:
-// tiles x chunks additions.
+// Lays out frame.tile_begin and turns every chunk's counts into its write cursors: tiles x
+// chunks additions, parallel over blocks of limits::kBinPlanTiles tiles, and a serial prefix
+// sum over tiles.
 void plan_bins(Frame& frame);
 
 // Writes one chunk's entries at its cursors. Parallel over chunks.

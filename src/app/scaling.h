@@ -1,0 +1,56 @@
+// `fastshade bench scaling`: what one run measured and modelled, and how it is reported.
+// The measuring is in scaling_command.cpp, the reports in scaling_report.cpp, the plot in
+// scaling_plot.cpp.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "exec/schedule_model.h"
+#include "fastshade/render.h"
+
+namespace fastshade {
+
+// One tile size and thread count: per-stage medians over the timed frames.
+struct ScalingPoint {
+  int tile_px = 0, threads = 0;
+  bool oversubscribed = false;  // more threads than the machine has
+  StageTimes median;
+};
+
+// The load-balance model for one tile size (exec/schedule_model.h).
+struct ScalingModel {
+  int tile_px = 0;
+  std::size_t tiles = 0, chunks = 0;  // items of the largest phases
+  double serial_ms = 0;               // the bin plan and "other": no worker shares them
+  double critical_path_ms = 0;        // unboundedly many workers
+  std::vector<SchedulePhase> phases;            // the measured item costs
+  std::vector<SchedulePrediction> predictions;  // for kModelWorkers
+};
+
+// Workers the model predicts for: the hardware of today's and tomorrow's desktops and servers.
+inline constexpr int kModelWorkers[] = {1, 2, 4, 8, 16, 32, 64};
+
+struct ScalingRun {
+  std::string scene, method, isa;
+  int width = 0, height = 0;
+  long long triangles = 0;
+  int hardware_threads = 0, frames = 0;
+  std::vector<ScalingPoint> points;  // tile-major, threads ascending, the first with 1 thread
+  std::vector<ScalingModel> models;  // one per tile size
+};
+
+// Speed-up of `stage` at `p` against the same tile size's 1-thread point.
+double speedup(const ScalingRun& run, const ScalingPoint& p, double StageTimes::*stage);
+// The model's total at `workers` for `tile_px` (0 if that was not modelled).
+double model_total_ms(const ScalingRun& run, int tile_px, int workers);
+
+std::string scaling_csv(const ScalingRun& run);
+std::string scaling_json(const ScalingRun& run);
+void print_scaling_tables(const ScalingRun& run);
+
+// Draws scaling.png from scaling.json with python3 + matplotlib. Returns false, having said
+// why on stderr, if no python3 with matplotlib is found; throws if the script fails.
+bool plot_scaling(const std::filesystem::path& json, const std::filesystem::path& png);
+
+}  // namespace fastshade
