@@ -16,6 +16,13 @@ struct ScalingPoint {
   int tile_px = 0, threads = 0;
   bool oversubscribed = false;  // more threads than the machine has
   StageTimes median;
+  // CPU time the process got per wall-clock time over the timed frames: below `threads` when
+  // other programs held the cores (the machine was not ours) or the threads waited.
+  double cpus_used = 0;
+  // Item costs of profiled frames at this thread count as measured, without overheads
+  // (exec/frame_profile.h). Against the 1-thread costs they show contention: items that got
+  // slower because others ran beside them.
+  std::vector<SchedulePhase> phases;
 };
 
 // The load-balance model for one tile size (exec/schedule_model.h).
@@ -28,6 +35,15 @@ struct ScalingModel {
   std::vector<SchedulePrediction> predictions;  // for kModelWorkers
 };
 
+// A point whose process got fewer CPUs than this share of min(threads, hardware threads) was
+// measured while other programs held the cores: flagged in the table and the plot. 0.9
+// leaves room for the serial parts of a frame, which keep one thread waiting.
+inline constexpr double kBusyCpuShare = 0.9;
+// A point (within the hardware's threads) whose measured items took this much longer in sum
+// than on 1 thread ran on slowed cores: on a virtual machine, a host that shares our cores
+// with others; invisible to CPU time. Flagged alike. Quiet runs here stay below 1.05.
+inline constexpr double kSlowedItemRatio = 1.1;
+
 // Workers the model predicts for: the hardware of today's and tomorrow's desktops and servers.
 inline constexpr int kModelWorkers[] = {1, 2, 4, 8, 16, 32, 64};
 
@@ -39,6 +55,11 @@ struct ScalingRun {
   std::vector<ScalingPoint> points;  // tile-major, threads ascending, the first with 1 thread
   std::vector<ScalingModel> models;  // one per tile size
 };
+
+// Sum of p's measured item costs (phases timed item by item) over the same at 1 thread.
+double item_cost_ratio(const ScalingRun& run, const ScalingPoint& p);
+// Whether p was measured on a busy machine or slowed cores (kBusyCpuShare, kSlowedItemRatio).
+bool untrustworthy(const ScalingRun& run, const ScalingPoint& p);
 
 // Speed-up of `stage` at `p` against the same tile size's 1-thread point.
 double speedup(const ScalingRun& run, const ScalingPoint& p, double StageTimes::*stage);

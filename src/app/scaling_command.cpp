@@ -1,12 +1,17 @@
 // `fastshade bench scaling`: renders one scene at every tile size with 1, 2, ... threads, taking
 // frames round-robin across the thread counts (so that a shared machine's drift hits them all
-// alike), and profiles 1-thread frames in the same rounds for the load-balance model.
+// alike), and a profiled frame per thread count in the same rounds: the 1-thread ones feed the
+// load-balance model, the others show how much slower each item gets beside other threads.
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <memory>
 #include <set>
 #include <system_error>
+
+#include <sys/resource.h>
+
+#include <chrono>
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -79,6 +84,14 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// The process's CPU time (all threads, user + system) in seconds.
+double process_cpu_s() {
+  rusage usage{};
+  ::getrusage(RUSAGE_SELF, &usage);
+  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 StageTimes stage_medians(const std::vector<StageTimes>& frames) {
   auto of = [&](double StageTimes::*stage) {
     std::vector<double> v;
@@ -89,12 +102,12 @@ StageTimes stage_medians(const std::vector<StageTimes>& frames) {
           of(&StageTimes::total)};
 }
 
-ScalingModel model_from(int tile_px, const std::vector<FrameProfile>& profiles) {
+ScalingModel model_from(int tile_px, const std::vector<FrameProfile>& one_thread) {
   ScalingModel m;
   m.tile_px = tile_px;
-  m.phases = schedule_phases(profiles);
-  m.tiles = profiles.front().tile_ns.size();
-  m.chunks = profiles.front().setup_chunk_ns.size();
+  m.phases = schedule_phases(one_thread);
+  m.tiles = one_thread.front().tile_ns.size();
+  m.chunks = one_thread.front().setup_chunk_ns.size();
   for (const SchedulePhase& phase : m.phases)
     if (phase.item_ms.size() == 1) m.serial_ms += phase.item_ms.front();
   m.critical_path_ms = critical_path_ms(m.phases);
@@ -102,7 +115,7 @@ ScalingModel model_from(int tile_px, const std::vector<FrameProfile>& profiles) 
   return m;
 }
 
-// Every thread count at one tile size, round-robin, plus one profiled 1-thread frame a round.
+// Every thread count at one tile size, round-robin: a timed and a profiled frame each a round.
 void measure_tile(const Scene& scene, const ScalingCommand& cmd, int tile_px,
                   const std::vector<int>& threads, int hardware_threads, ScalingRun& run) {
   std::vector<std::unique_ptr<Renderer>> renderers;
@@ -115,14 +128,22 @@ void measure_tile(const Scene& scene, const ScalingCommand& cmd, int tile_px,
     renderers.back()->render_frame();  // warm-up: first-touch allocation, caches
   }
   std::vector<std::vector<StageTimes>> times(threads.size());
-  std::vector<FrameProfile> profiles(cmd.frames);
-  for (int f = 0; f < cmd.frames; ++f) {
-    for (std::size_t i = 0; i < renderers.size(); ++i) renderers[i]->render_frame(&times[i].emplace_back());
-    renderers.front()->render_frame(nullptr, &profiles[f]);  // threads.front() == 1
-  }
+  std::vector<std::vector<FrameProfile>> profiles(threads.size(), std::vector<FrameProfile>(cmd.frames));
+  std::vector<double> cpu_s(threads.size(), 0.0), wall_s(threads.size(), 0.0);
+  for (int f = 0; f < cmd.frames; ++f)
+    for (std::size_t i = 0; i < renderers.size(); ++i) {
+      const double cpu0 = process_cpu_s();
+      const auto wall0 = std::chrono::steady_clock::now();
+      renderers[i]->render_frame(&times[i].emplace_back());
+      wall_s[i] += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      cpu_s[i] += process_cpu_s() - cpu0;
+      renderers[i]->render_frame(nullptr, &profiles[i][f]);
+    }
   for (std::size_t i = 0; i < threads.size(); ++i)
-    run.points.push_back({tile_px, threads[i], threads[i] > hardware_threads, stage_medians(times[i])});
-  run.models.push_back(model_from(tile_px, profiles));
+    run.points.push_back({tile_px, threads[i], threads[i] > hardware_threads, stage_medians(times[i]),
+                          wall_s[i] > 0 ? cpu_s[i] / wall_s[i] : 0.0,
+                          schedule_phases(profiles[i], /*with_overheads=*/false)});
+  run.models.push_back(model_from(tile_px, profiles.front()));  // threads.front() == 1
   const RenderStats stats = renderers.front()->last_stats();
   run.triangles = stats.triangles_in;
   run.isa = stats.isa;

@@ -20,6 +20,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 run = json.load(open(sys.argv[1]))
+def busy(p):  # measured on a busy machine or slowed cores (the table's "!")
+    return p["untrustworthy"]
 fig, (measured, model) = plt.subplots(1, 2, figsize=(12, 5))
 tiles = sorted({p["tile"] for p in run["points"]})
 colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -28,6 +30,9 @@ for i, tile in enumerate(tiles):
     c = colors[i % len(colors)]
     measured.plot([p["threads"] for p in pts], [p["speedup"]["total"] for p in pts], "o-",
                   color=c, label=f"tile {tile}: frame")
+    measured.plot([p["threads"] for p in pts if busy(p)],
+                  [p["speedup"]["total"] for p in pts if busy(p)], "o", color="white",
+                  markeredgecolor=c)
     measured.plot([p["threads"] for p in pts],
                   [sum(pts[0]["median_ms"][s] for s in ("front_end", "binning")) /
                    sum(p["median_ms"][s] for s in ("front_end", "binning")) for p in pts],
@@ -36,7 +41,7 @@ top = max(p["threads"] for p in run["points"])
 measured.plot([1, top], [1, top], "k:", label="ideal")
 measured.axvline(run["hardware_threads"], color="grey", lw=0.8)
 measured.set_xticks(sorted({p["threads"] for p in run["points"]}))
-measured.set_xlabel("threads (grey: hardware threads)")
+measured.set_xlabel("threads (grey: hardware threads; hollow: busy or slowed cores, not to trust)")
 measured.set_ylabel("speed-up vs 1 thread")
 measured.set_title(f"measured: {run['scene']}, {run['width']}x{run['height']}, {run['method']}")
 measured.legend(fontsize=7)

@@ -46,8 +46,9 @@ inline constexpr int kTrianglesPerChunk = 4096;
 // frame with 16 px tiles (8160 tiles) still makes 32 blocks for the workers.
 inline constexpr int kBinPlanTiles = 256;
 
-// Vertex stage: vertices per parallel block (TBB's grain). A vertex costs ~10 ns, so a block
-// is ~40 us: far above the cost of handing it out, and a 35k-vertex mesh still makes 9 blocks.
+// Vertex stage: vertices per parallel block (TBB's grain). A vertex costs ~15 ns (phong,
+// measured), so a block is ~60 us: far above the cost of handing it out, and a 35k-vertex
+// mesh still makes 9 blocks.
 inline constexpr int kVerticesPerBlock = 4096;
 
 // Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exec/schedule_model.h"
+#include "fastshade/render.h"
 
 namespace fastshade {
 
@@ -19,7 +20,7 @@ struct FrameProfile {
   uint64_t plan_bins_ns = 0;             // binning's plan (its blocks cost alike)
   std::vector<uint64_t> fill_chunk_ns;   // binning's fill pass, per chunk
   std::vector<uint64_t> tile_ns;         // raster+shade, per tile in tile order, empty ones too
-  uint64_t total_ns = 0;                 // the whole frame (StageTimes::total)
+  StageTimes stages;                     // the frame's stage times (wall clock, ms)
 
   void reset(std::size_t chunks, std::size_t tiles, std::size_t vertex_count);
 };
@@ -54,8 +55,13 @@ inline uint64_t* profile_slot(FrameProfile* profile, std::vector<uint64_t> Frame
 // the median over `frames` (all of one scene and tile size): vertex blocks of
 // limits::kVerticesPerBlock sharing the vertex stage's time equally, setup chunks, count
 // chunks, the bin plan's blocks of limits::kBinPlanTiles tiles sharing its time equally (its
-// short serial prefix sum included), fill chunks, tiles, and one serial item "other" for what
-// no item covers (starting and joining parallel loops, clock reads).
-std::vector<SchedulePhase> schedule_phases(std::span<const FrameProfile> frames);
+// short serial prefix sum included), fill chunks, tiles. What a stage's wall time holds beyond
+// its items (handing items out, clock reads: paid per item, in parallel) is spread evenly over
+// the stage's items; what the frame holds beyond its stages becomes one serial item, "between
+// stages". Without `with_overheads` (for comparing item costs across thread counts, where
+// items overlap and the walls say nothing about them) both are left out: items as measured,
+// and "between stages" 0.
+std::vector<SchedulePhase> schedule_phases(std::span<const FrameProfile> frames,
+                                           bool with_overheads = true);
 
 }  // namespace fastshade

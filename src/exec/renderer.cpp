@@ -175,7 +175,7 @@ struct Renderer::Impl {
           executor.run(frame, draw, image, profile ? profile->tile_ns.data() : nullptr);
       t.raster_shade = ms_since(t2);
       t.total = ms_since(t0);
-      if (profile) profile->total_ns = static_cast<uint64_t>(t.total * 1e6);
+      if (profile) profile->stages = t;
       stats.tiles_nonempty = counts.tiles_nonempty;
       stats.covered_pixels = counts.covered_pixels;
     });

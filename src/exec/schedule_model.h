@@ -14,6 +14,7 @@ struct SchedulePhase {
   std::string stage;            // which reported stage it belongs to ("front_end", ...)
   std::string name;             // what its items are ("setup chunks", ...)
   std::vector<double> item_ms;  // in hand-out order
+  bool timed_whole = false;     // timed as a whole (wall time) and split evenly into its items
 };
 
 // Greedy list schedule: each item, in order, goes to the worker that becomes free first.
