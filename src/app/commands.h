@@ -27,7 +27,7 @@ struct ScalingCommand {
   int frames = 10;                     // timed frames per point, after one warm-up
   std::string method = "phong";
   std::string out_dir = ".";           // scaling.csv, scaling.json, scaling.png
-  bool plot = true;
+  bool no_plot = false;                // skip scaling.png
 };
 int run_bench_scaling(const ScalingCommand& cmd);
 

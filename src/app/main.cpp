@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
   sc->add_option("--frames", scaling.frames, "timed frames per point after one warm-up (default 10)");
   sc->add_option("--method", scaling.method, "shading method (default phong)");
   sc->add_option("--out", scaling.out_dir, "directory for scaling.csv, .json, .png (default .)");
-  sc->add_flag("!--no-plot", scaling.plot, "skip scaling.png");
+  sc->add_flag("--no-plot", scaling.no_plot, "skip scaling.png");
 
   try {
     app.parse(argc, argv);

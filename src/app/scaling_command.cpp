@@ -191,7 +191,7 @@ int run_bench_scaling(const ScalingCommand& cmd) {
   write_text_file(out_dir / "scaling.csv", scaling_csv(run));
   write_text_file(out_dir / "scaling.json", scaling_json(run));
   print_scaling_tables(run);
-  if (cmd.plot && plot_scaling(out_dir / "scaling.json", out_dir / "scaling.png"))
+  if (!cmd.no_plot && plot_scaling(out_dir / "scaling.json", out_dir / "scaling.png"))
     std::printf("wrote %s\n", (out_dir / "scaling.png").string().c_str());
   std::printf("wrote %s and %s\n", (out_dir / "scaling.csv").string().c_str(),
               (out_dir / "scaling.json").string().c_str());
