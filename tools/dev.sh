@@ -13,8 +13,8 @@ case "$mode" in render|test) ;; *) echo "usage: bash tools/dev.sh render|test" >
 packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev libopenmesh-dev
           libopenimageio-dev libhwy-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
           libcli11-dev)
-# Optional, not installed here: python3-matplotlib draws `fastshade report`'s plots
-# (tools/report_plots.py, tools/results.sh); without it the report writes its tables and says so.
+# Optional, not installed here: python3-matplotlib draws the plots of `fastshade report` and
+# `fastshade bench scaling`; without it both write their tables and say so.
 bash tools/ensure_packages.sh "${packages[@]}"
 
 jobs=$(nproc)

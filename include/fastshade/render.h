@@ -48,6 +48,9 @@ struct PathStats {
   long long triangles = 0, pixels = 0;
 };
 
+// Internal: per-item costs for the load-balance model (src/exec/frame_profile.h).
+struct FrameProfile;
+
 struct RenderStats {
   long long triangles_in = 0;       // in the scene's meshes
   long long triangles_drawn = 0;    // binned (after clipping; a clipped triangle may count more)
@@ -74,8 +77,9 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // One frame; `times` receives this frame's stage times.
-  Image render_frame(StageTimes* times = nullptr);
+  // One frame; `times` receives this frame's stage times. A non-null `profile` (internal, for
+  // `fastshade bench scaling`) receives every parallel item's cost; null costs nothing.
+  Image render_frame(StageTimes* times = nullptr, FrameProfile* profile = nullptr);
   // The counts of the last frame (times filled by the caller's timing policy).
   RenderStats last_stats() const;
 

@@ -68,4 +68,16 @@ struct TuneCommand {
 // Prints the table; exit 0 with the config written, 1 if no candidate is within the budget.
 int run_tune(const TuneCommand& cmd);
 
+// `fastshade bench scaling` (app/scaling.h): thread and tile sweep plus the load-balance model.
+struct ScalingCommand {
+  std::string scene;                   // empty: the embedded default scene
+  int max_threads = 0;                 // 0: the hardware's threads and one more (oversubscribed)
+  std::string tiles = "16,32,64,128";  // tile sizes, comma-separated
+  int frames = 10;                     // timed frames per point, after one warm-up
+  std::string method = "phong";
+  std::string out_dir = ".";           // scaling.csv, scaling.json, scaling.png
+  bool no_plot = false;                // skip scaling.png
+};
+int run_bench_scaling(const ScalingCommand& cmd);
+
 }  // namespace fastshade

@@ -105,6 +105,18 @@ int main(int argc, char** argv) {
   t->add_option("--frames", tune.frames, "timed frames per candidate and scene after one warm-up")
       ->capture_default_str();
   t->add_option("--isa", tune.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+  ScalingCommand scaling;
+  CLI::App* bench = app.add_subcommand("bench", "benchmarks")->require_subcommand(1);
+  CLI::App* sc = bench->add_subcommand(
+      "scaling", "speed-up per stage over thread counts and tile sizes, and a load-balance model");
+  sc->add_option("scene", scaling.scene, "scene JSON; omitted: the default scene");
+  sc->add_option("--max-threads", scaling.max_threads,
+                 "most threads (default: hardware threads + 1, one oversubscribed point)");
+  sc->add_option("--tiles", scaling.tiles, "tile sizes, comma-separated (default 16,32,64,128)");
+  sc->add_option("--frames", scaling.frames, "timed frames per point after one warm-up (default 10)");
+  sc->add_option("--method", scaling.method, "shading method (default phong)");
+  sc->add_option("--out", scaling.out_dir, "directory for scaling.csv, .json, .png (default .)");
+  sc->add_flag("--no-plot", scaling.no_plot, "skip scaling.png");
 
   try {
     app.parse(argc, argv);
@@ -126,6 +138,7 @@ int main(int argc, char** argv) {
     if (*b) return run_brdf_table(table_isa);
     if (*rep) return run_report(report);
     if (*t) return run_tune(tune);
+    if (*sc) return run_bench_scaling(scaling);
   } catch (const InputError& e) {
     std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;

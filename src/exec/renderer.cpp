@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "exec/frame_profile.h"
 #include "exec/isa.h"
 #include "exec/left_out.h"
 #include "exec/tile_executor.h"
@@ -154,7 +155,7 @@ struct Renderer::Impl {
     stats.isa = active_isa();
   }
 
-  Image render(StageTimes* times) {
+  Image render(StageTimes* times, FrameProfile* profile) {
     Image image;
     image.width = frame.grid.width;
     image.height = frame.grid.height;
@@ -162,11 +163,16 @@ struct Renderer::Impl {
     StageTimes t;
     BackEndCounts back_end;
     int objects_culled = 0;
+    if (profile) profile->reset(frame.chunks.size(), frame.grid.tile_count(), geometry.positions.size());
     arena.execute([&] {
       const auto t0 = Clock::now();
-      objects_culled = run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
+      {
+        ItemTimer timer(profile ? &profile->vertex_stage_ns : nullptr);
+        objects_culled = run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
+      }
       const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());
       tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+        ItemTimer timer(profile_slot(profile, &FrameProfile::setup_chunk_ns, c));
         const uint32_t first = static_cast<uint32_t>(c * limits::kTrianglesPerChunk);
         const uint32_t last = std::min<uint32_t>(first + limits::kTrianglesPerChunk, n_tris);
         setup_chunk(geometry, vertices, frame.attrs, first, last, setup, frame.chunks[c]);
@@ -174,17 +180,26 @@ struct Renderer::Impl {
       t.front_end = ms_since(t0);
 
       const auto t1 = Clock::now();
-      tbb::parallel_for(std::size_t(0), frame.chunks.size(),
-                        [&](std::size_t c) { count_chunk_bins(frame.grid, classified, frame.chunks[c]); });
-      plan_bins(frame);
-      tbb::parallel_for(std::size_t(0), frame.chunks.size(),
-                        [&](std::size_t c) { fill_chunk_bins(frame, static_cast<uint32_t>(c)); });
+      tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+        ItemTimer timer(profile_slot(profile, &FrameProfile::count_chunk_ns, c));
+        count_chunk_bins(frame.grid, classified, frame.chunks[c]);
+      });
+      {
+        ItemTimer timer(profile ? &profile->plan_bins_ns : nullptr);
+        plan_bins(frame);
+      }
+      tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+        ItemTimer timer(profile_slot(profile, &FrameProfile::fill_chunk_ns, c));
+        fill_chunk_bins(frame, static_cast<uint32_t>(c));
+      });
       t.binning = ms_since(t1);
 
       const auto t2 = Clock::now();
-      const BackEndCounts counts = executor.run(frame, draw, image);
+      const BackEndCounts counts =
+          executor.run(frame, draw, image, profile ? profile->tile_ns.data() : nullptr);
       t.raster_shade = ms_since(t2);
       t.total = ms_since(t0);
+      if (profile) profile->stages = t;
       back_end = counts;
     });
     stats.tiles_nonempty = back_end.tiles_nonempty;
@@ -214,7 +229,9 @@ Renderer::Renderer(const Scene& scene, const RenderOptions& options) {
 }
 Renderer::~Renderer() = default;
 
-Image Renderer::render_frame(StageTimes* times) { return impl_->render(times); }
+Image Renderer::render_frame(StageTimes* times, FrameProfile* profile) {
+  return impl_->render(times, profile);
+}
 RenderStats Renderer::last_stats() const { return impl_->stats; }
 
 namespace {

@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 
+#include "exec/frame_profile.h"
 #include "exec/tile_io.h"
 #include "shade/lighting.h"
 
@@ -73,7 +74,8 @@ struct TileExecutor::Scratch {
 TileExecutor::TileExecutor() : scratch_(std::make_unique<Scratch>()) {}
 TileExecutor::~TileExecutor() = default;
 
-BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image& image) {
+BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image& image,
+                                uint64_t* tile_ns) {
   const TileGrid& grid = frame.grid;
   const uint32_t background = background_rgba(frame.shade);
   const std::vector<uint8_t> background_rgb = background_row(background);
@@ -85,6 +87,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
       tbb::blocked_range<int>(0, grid.tile_count(), 1),
       [&](const tbb::blocked_range<int>& range) {
         for (int tile = range.begin(); tile != range.end(); ++tile) {
+          ItemTimer timer(tile_ns ? tile_ns + tile : nullptr);
           const int tx = tile % grid.tiles_x, ty = tile / grid.tiles_x;
           const PixelRect rect{tx * grid.tile_px, ty * grid.tile_px,
                                std::min((tx + 1) * grid.tile_px, grid.width) - 1,

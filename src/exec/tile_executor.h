@@ -21,8 +21,10 @@ class TileExecutor {
  public:
   TileExecutor();
   ~TileExecutor();
-  // Runs inside the caller's task arena. `image` must already have the frame's size.
-  BackEndCounts run(const Frame& frame, const TileDraw& draw, Image& image);
+  // Runs inside the caller's task arena. `image` must already have the frame's size. A non-null
+  // `tile_ns` (one slot per tile) receives each tile's time (exec/frame_profile.h).
+  BackEndCounts run(const Frame& frame, const TileDraw& draw, Image& image,
+                    uint64_t* tile_ns = nullptr);
 
  private:
   struct Scratch;

@@ -1,5 +1,9 @@
 #include "front/binning.h"
 
+#include <algorithm>
+
+#include <tbb/parallel_for.h>
+
 #include "frame/edge_function.h"
 
 namespace fastshade {
@@ -50,21 +54,34 @@ void count_chunk_bins(const TileGrid& grid, bool classified, Chunk& chunk) {
 
 void plan_bins(Frame& frame) {
   const int tiles = frame.grid.tile_count();
-  frame.tile_begin.resize(tiles + 1);
+  const int blocks = (tiles + limits::kBinPlanTiles - 1) / limits::kBinPlanTiles;
+  std::vector<uint32_t>& begin = frame.tile_begin;
+  begin.assign(tiles + 1, 0);
   const bool classified = !frame.chunks.empty() && !frame.chunks[0].tile_paths.empty();
   frame.tile_paths.assign(classified ? tiles : 0, 0);
-  uint32_t total = 0;
-  for (int tile = 0; tile < tiles; ++tile) {
-    frame.tile_begin[tile] = total;
-    for (Chunk& chunk : frame.chunks) {
-      const uint32_t n = chunk.tile_counts[tile];
-      chunk.tile_counts[tile] = total;  // from now on: where this chunk writes in this tile
-      total += n;
-      if (classified) frame.tile_paths[tile] |= chunk.tile_paths[tile];
-    }
-  }
-  frame.tile_begin[tiles] = total;
-  frame.bin_entries.resize(total);
+  // Tile by tile across all chunks would touch a cache line per chunk and tile; a block of
+  // tiles reads each chunk's counters in order instead.
+  tbb::parallel_for(0, blocks, [&](int block) {  // every tile's count, into begin[tile + 1]
+    const int first = block * limits::kBinPlanTiles, last = std::min(first + limits::kBinPlanTiles, tiles);
+    for (const Chunk& chunk : frame.chunks)
+      for (int tile = first; tile < last; ++tile) {
+        begin[tile + 1] += chunk.tile_counts[tile];
+        if (classified) frame.tile_paths[tile] |= chunk.tile_paths[tile];
+      }
+  });
+  for (int tile = 0; tile < tiles; ++tile) begin[tile + 1] += begin[tile];
+  tbb::parallel_for(0, blocks, [&](int block) {
+    const int first = block * limits::kBinPlanTiles, last = std::min(first + limits::kBinPlanTiles, tiles);
+    uint32_t cursor[limits::kBinPlanTiles];
+    std::copy(begin.begin() + first, begin.begin() + last, cursor);
+    for (Chunk& chunk : frame.chunks)  // in draw order
+      for (int tile = first; tile < last; ++tile) {
+        const uint32_t n = chunk.tile_counts[tile];
+        chunk.tile_counts[tile] = cursor[tile - first];  // from now on: where this chunk writes
+        cursor[tile - first] += n;
+      }
+  });
+  frame.bin_entries.resize(begin[tiles]);
 }
 
 void fill_chunk_bins(Frame& frame, uint32_t chunk_index) {

@@ -9,7 +9,8 @@ namespace fastshade {
 void count_chunk_bins(const TileGrid& grid, bool classified, Chunk& chunk);
 
 // Lays out frame.tile_begin, merges the chunks' tile paths into frame.tile_paths, and turns
-// every chunk's counts into its write cursors. Serial: tiles x chunks additions.
+// every chunk's counts into its write cursors: tiles x chunks additions, parallel over blocks
+// of limits::kBinPlanTiles tiles, and a serial prefix sum over tiles.
 void plan_bins(Frame& frame);
 
 // Writes one chunk's entries at its cursors. Parallel over chunks.

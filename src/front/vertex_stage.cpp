@@ -102,7 +102,8 @@ int run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const View
     const glm::mat4 proj = xf.proj;
     const MaterialConstants& material = shade.materials[o.material];
     tbb::parallel_for(
-        tbb::blocked_range<uint32_t>(o.first_vertex, o.first_vertex + o.vertex_count, 4096),
+        tbb::blocked_range<uint32_t>(o.first_vertex, o.first_vertex + o.vertex_count,
+                                      limits::kVerticesPerBlock),
         [&](const tbb::blocked_range<uint32_t>& r) {
           for (uint32_t i = r.begin(); i != r.end(); ++i) {
             const glm::vec4 pos_view = model_view * glm::vec4(g.positions[i], 1.0f);

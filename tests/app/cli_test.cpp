@@ -91,4 +91,67 @@ TEST_F(Cli, CompareRejectsMismatchedSizes) {
   EXPECT_NE(r.err.find("sizes differ"), std::string::npos) << r.err;
 }
 
+TEST_F(Cli, BenchScalingWritesCsvJsonAndTables) {
+  const fs::path scene = write("s.json", scene_with(R"([{"primitive": "icosphere"}])"));
+  const fs::path out = dir_ / "results";  // created by the run
+  const Outcome r = run("bench scaling " + scene.string() + " --max-threads 2 --tiles 16,8 --frames 2 "
+                        "--no-plot --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("load-balance model"), std::string::npos) << r.out;
+  EXPECT_EQ(listing(), (std::set<std::string>{"results", "s.json"}));
+  // CSV: a header and one row per tile size and thread count, tiles ascending.
+  std::istringstream csv(slurp(out / "scaling.csv"));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 5u) << slurp(out / "scaling.csv");
+  EXPECT_EQ(lines[0].rfind("scene,method,width,height,tile,threads,", 0), 0u) << lines[0];
+  EXPECT_NE(lines[1].find(",8,1,0,2,"), std::string::npos) << lines[1];
+  EXPECT_NE(lines[4].find(",16,2,0,2,"), std::string::npos) << lines[4];
+  const auto j = nlohmann::json::parse(slurp(out / "scaling.json"));
+  ASSERT_EQ(j["points"].size(), 4u);
+  for (const auto& p : j["points"]) {
+    for (const char* stage : {"front_end", "binning", "raster_shade", "total"})
+      EXPECT_GT(p["median_ms"][stage].get<double>(), 0.0) << stage;
+    if (p["threads"] == 1) {
+      EXPECT_DOUBLE_EQ(p["speedup"]["total"].get<double>(), 1.0);
+    }
+  }
+  ASSERT_EQ(j["model"].size(), 2u);
+  for (const auto& m : j["model"]) {
+    ASSERT_EQ(m["predictions"].size(), 7u);
+    EXPECT_EQ(m["predictions"][0]["workers"], 1);
+    EXPECT_EQ(m["predictions"][6]["workers"], 64);
+    EXPECT_DOUBLE_EQ(m["predictions"][0]["speedup"].get<double>(), 1.0);
+    EXPECT_LE(m["critical_path_ms"].get<double>(), m["predictions"][6]["total_ms"].get<double>() + 1e-9);
+  }
+}
+
+TEST_F(Cli, BenchScalingPlotsOrSaysHowTo) {
+  const fs::path scene = write("s.json", scene_with(R"([{"primitive": "icosphere"}])"));
+  const Outcome r = run("bench scaling " + scene.string() + " --max-threads 1 --tiles 16 --frames 1 "
+                        "--out " + dir_.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "scaling.png") ||
+              r.err.find("apt-get install python3-matplotlib") != std::string::npos)
+      << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "scaling.csv"));
+}
+
+TEST_F(Cli, BenchScalingRefusesBadUsage) {
+  const fs::path scene = write("s.json", scene_with(R"([{"primitive": "icosphere"}])"));
+  const std::string base = "bench scaling " + scene.string() + " --frames 1 --no-plot --out " + dir_.string();
+  expect_bad_input(base + " --tiles 48", "--tiles");
+  expect_bad_input(base + " --tiles 8,,16", "--tiles");
+  expect_bad_input(base + " --tiles 512", "--tiles");
+  expect_bad_input(base + " --max-threads -1", "--max-threads");
+  expect_bad_input(base + " --max-threads 5000", "--max-threads");
+  expect_bad_input(base + " --frames 0", "--frames");
+  expect_bad_input(base + " --method nope", "--method");
+  expect_bad_input("bench scaling " + (dir_ / "missing.json").string() + " --no-plot --out " + dir_.string(),
+                   "missing.json");
+  expect_bad_input("bench scaling " + scene.string() + " --out " + scene.string(), "not a directory");
+  expect_bad_input("bench scaling " + scene.string() + " --out " + (dir_ / "a" / "b").string(), "does not exist");
+  expect_bad_input("bench", "subcommand");
+}
+
 }  // namespace
