@@ -22,6 +22,7 @@
 #include "fastshade/scene.h"
 #include "io/json_path.h"
 #include "io/scene_camera.h"
+#include "io/scene_file.h"
 
 namespace fastshade {
 namespace {
@@ -319,7 +320,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source,
   return scene;
 }
 
-Scene load_scene(const std::filesystem::path& path) {
+std::string read_scene_file(const std::filesystem::path& path) {
   const std::string source = path.string();
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
@@ -335,9 +336,14 @@ Scene load_scene(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(source, "read error");
+  return text.str();
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  const std::string text = read_scene_file(path);
   std::filesystem::path base_dir = path.parent_path();
   if (base_dir.empty()) base_dir = ".";
-  return parse_scene(text.str(), source, base_dir);
+  return parse_scene(text, path.string(), base_dir);
 }
 
 }  // namespace fastshade
