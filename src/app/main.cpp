@@ -51,6 +51,20 @@ int main(int argc, char** argv) {
   CLI::App* b = app.add_subcommand("brdf-table", "error and cost of every BRDF approximation");
   b->add_option("--isa", table_isa, "SIMD target: scalar, sse4, avx2, avx512, best");
 
+  BatchCommand batch;
+  CLI::App* bt = app.add_subcommand("batch", "render every mesh of files, directories or list files "
+                                             "(docs/BATCH.md)");
+  bt->add_option("inputs", batch.inputs, "mesh files, directories (searched recursively), list files "
+                                         "(.txt, .lst, .list: one path a line)")->required();
+  bt->add_option("-o,--output", batch.outdir, "output directory (created if missing)")->required();
+  bt->add_option("--scene", batch.scene, "template scene: image, lights, materials, fit camera");
+  bt->add_option("--size", batch.size, "image size WxH (default: the template's)");
+  bt->add_option("--views", batch.views, "views per mesh, turned 360/K degrees about the vertical");
+  bt->add_option("--shard", batch.shard, "render part I of N (I from 0) of the sorted meshes");
+  bt->add_option("--threads", batch.options.threads, "worker threads (0 = all)");
+  bt->add_option("--method", batch.options.method, "shading method (see render --help)");
+  bt->add_option("--format", batch.format, "image format: png, exr or tif");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -66,6 +80,7 @@ int main(int argc, char** argv) {
     if (*c) return run_compare(image_a, image_b, compare_json);
     if (*i) return run_info(mesh, info_json);
     if (*b) return run_brdf_table(table_isa);
+    if (*bt) return run_batch(batch);
   } catch (const InputError& e) {
     std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;

@@ -11,45 +11,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/cli_run.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using fastshade::testing::Outcome;
+using fastshade::testing::slurp;
 
-struct Outcome {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public fastshade::testing::ProgramTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fastshade_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  Outcome run(const std::string& args) {
-    const std::string cmd = std::string(FASTSHADE_BINARY) + " " + args + " >" +
-                            (dir_ / "stdout.txt").string() + " 2>" + (dir_ / "stderr.txt").string();
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "stdout.txt"),
-            slurp(dir_ / "stderr.txt")};
-  }
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
   // Exit 2, one line naming `needle`, and nothing left in the directory but our own files.
   void expect_bad_input(const std::string& args, const std::string& needle) {
     const auto before = listing();
@@ -75,8 +46,6 @@ class Cli : public ::testing::Test {
       "materials": {"m": {"diffuse": 0.7, "specular": 0.3, "shininess": 20}},
       "objects": )" + objects + "}";
   }
-
-  fs::path dir_;
 };
 
 TEST_F(Cli, DefaultSceneRendersWithStats) {
