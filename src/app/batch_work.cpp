@@ -57,22 +57,28 @@ class Workers {
  public:
   Workers(const std::vector<MeshJob>& jobs, const BatchSetup& setup) : jobs_(jobs), setup_(setup) {}
 
-  // One worker's loop: views of loaded meshes first, else the next mesh; until neither is left.
+  // One worker's loop: views of loaded meshes first, else the next mesh; a worker with
+  // neither waits while a load is in flight (its views are coming), else it is done.
   void work() {
-    while (!stopping()) {
+    for (;;) {
+      Work next = take_work();
+      if (!next.view && !next.job) return;
       try {
-        if (std::optional<ViewTask> task = take_view()) {
-          render(*task);
-          continue;
+        if (next.view) {
+          render(*next.view);
+        } else {
+          load(*next.job);
         }
-        const std::size_t i = next_job_++;
-        if (i >= jobs_.size()) return;
-        load(jobs_[i]);
       } catch (const std::exception& e) {  // results.jsonl cannot be written: stop
         const std::lock_guard<std::mutex> lock(mutex_);
         if (outcome_.fatal.empty()) outcome_.fatal = e.what();
         stop_ = true;
       }
+      if (next.job) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        --loading_;
+      }
+      more_work_.notify_all();  // views were queued, or a load ended
     }
   }
 
@@ -82,14 +88,29 @@ class Workers {
   }
 
  private:
+  struct Work {
+    std::optional<ViewTask> view;
+    const MeshJob* job = nullptr;  // to load
+  };
+
   bool stopping() const { return stop_.load() || StopSignals::received() != 0; }
 
-  std::optional<ViewTask> take_view() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (views_.empty()) return std::nullopt;
-    ViewTask task = std::move(views_.front());
-    views_.pop_front();
-    return task;
+  Work take_work() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      if (stopping()) return {};
+      if (!views_.empty()) {
+        Work work{std::move(views_.front())};
+        views_.pop_front();
+        return work;
+      }
+      if (next_job_ < jobs_.size()) {
+        ++loading_;
+        return {std::nullopt, &jobs_[next_job_++]};
+      }
+      if (loading_ == 0) return {};
+      more_work_.wait(lock);
+    }
   }
 
   void load(const MeshJob& job) {
@@ -171,9 +192,11 @@ class Workers {
 
   const std::vector<MeshJob>& jobs_;
   const BatchSetup& setup_;
-  std::atomic<std::size_t> next_job_{0};
   std::atomic<bool> stop_{false};
-  std::mutex mutex_;  // guards views_ and outcome_
+  std::mutex mutex_;  // guards everything below
+  std::condition_variable more_work_;
+  std::size_t next_job_ = 0;
+  int loading_ = 0;  // loads in flight
   std::deque<ViewTask> views_;
   BatchOutcome outcome_;
 };

@@ -53,8 +53,9 @@ struct BatchOutcome {
 
 // Renders every job's images. Workers take views of loaded meshes first, else load the next
 // mesh in `jobs` order (put the largest first: the longest load starts at once, small meshes
-// fill in around it) and queue its views; each render has options.threads threads, so a worker
-// with nothing left to take helps with the tiles of the others' renders. A mesh that fails to
+// fill in around it) and queue its views, else wait while a load is in flight; so one mesh's
+// views spread over all workers. Each render has options.threads threads, so a worker with
+// nothing left to take helps with the tiles of the others' renders. A mesh that fails to
 // load fails all its images; an image that fails to render or write fails alone; both are
 // recorded and the batch goes on. Stops taking work on SIGINT/SIGTERM (StopSignals) and
 // leaves no partial file: an image is written to a temp file and renamed, then recorded.
