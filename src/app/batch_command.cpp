@@ -93,7 +93,8 @@ void check_outdir(const fs::path& outdir, const std::string& format) {
     throw InputError(where, "exists and is not a directory");
   fs::create_directories(outdir, ec);
   if (ec) throw InputError(where, "cannot create the output directory: " + ec.message());
-  if (::access(outdir.c_str(), W_OK) != 0) throw InputError(where, "the output directory is not writable");
+  if (::access(outdir.c_str(), W_OK) != 0)
+    throw InputError(where, "the output directory is not writable");
   check_output_path(outdir / ("probe." + format));  // the format can be written
 }
 
@@ -173,12 +174,14 @@ int run_batch(const BatchCommand& cmd) {
   check_outdir(outdir, cmd.format);
 
   const fs::path results_path = outdir / "results.jsonl";
-  const Plan plan = plan_images(meshes, settings_text(scene, cmd), cmd, completed_images(results_path));
+  const Plan plan =
+      plan_images(meshes, settings_text(scene, cmd), cmd, completed_images(results_path));
   remove_stale_temp_files(outdir, plan.outputs);
 
   ResultsLog log(results_path);
   BatchProgress progress(plan.to_render, ::isatty(STDERR_FILENO) == 1);
-  for (const auto& [mesh, image] : plan.skipped) log.append(batch_line(*mesh, image, cmd.views, "skipped"));
+  for (const auto& [mesh, image] : plan.skipped)
+    log.append(batch_line(*mesh, image, cmd.views, "skipped"));
 
   const Clock::time_point start = Clock::now();
   BatchOutcome outcome;
@@ -190,9 +193,10 @@ int run_batch(const BatchCommand& cmd) {
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
   const std::size_t rendered = outcome.ok + outcome.failed;
-  std::printf("batch: %zu images in %.2f s (%.1f images/s, %d threads): %zu ok, %zu failed, %zu skipped\n",
-              rendered, seconds, seconds > 0 ? rendered / seconds : 0.0, outcome.threads, outcome.ok,
-              outcome.failed, plan.skipped.size());
+  std::printf(
+      "batch: %zu images in %.2f s (%.1f images/s, %d threads): %zu ok, %zu failed, %zu skipped\n",
+      rendered, seconds, seconds > 0 ? rendered / seconds : 0.0, outcome.threads, outcome.ok,
+      outcome.failed, plan.skipped.size());
   for (const auto& [key, error] : outcome.failures) {
     // Load errors name the mesh already ("PATH: problem"); others name what failed.
     const bool named = error.rfind(key + ": ", 0) == 0;

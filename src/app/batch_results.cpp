@@ -54,7 +54,8 @@ bool ends_with_newline(int fd) {
 ResultsLog::ResultsLog(const std::filesystem::path& path) : path_(path) {
   // Read as well: a torn last line is detected by reading the last byte.
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw InputError(path.string(), std::string("cannot open for appending: ") + std::strerror(errno));
+  if (fd_ < 0)
+    throw InputError(path.string(), std::string("cannot open for appending: ") + std::strerror(errno));
 }
 
 ResultsLog::~ResultsLog() {

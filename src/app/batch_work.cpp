@@ -34,13 +34,6 @@ json camera_json(const Camera& c) {
           {"fovy_deg", c.fovy_deg}, {"near", c.near}, {"far", c.far}};
 }
 
-// Renderer's constructor selects the process-wide ISA (Highway's global target mask): two
-// constructions at once would race on it, so they take turns. Rendering itself runs freely.
-std::mutex& renderer_construction_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
 // A mesh loaded and framed, shared by the views that still need it.
 struct LoadedMesh {
   const MeshJob* job;
@@ -141,13 +134,10 @@ class Workers {
       Scene scene = task.mesh->fit_scene;
       scene.camera = orbit_camera(scene.camera, image.angle_deg);
       const Clock::time_point t0 = Clock::now();
-      std::unique_ptr<Renderer> renderer;
-      {
-        const std::lock_guard<std::mutex> lock(renderer_construction_mutex());
-        renderer = std::make_unique<Renderer>(scene, setup_.options);
-      }
-      const Image frame = renderer->render_frame();
-      const RenderStats stats = renderer->last_stats();
+      // Safe on several workers at once: select_isa writes Highway's globals only on a change.
+      Renderer renderer(scene, setup_.options);
+      const Image frame = renderer.render_frame();
+      const RenderStats stats = renderer.last_stats();
       const Clock::time_point t1 = Clock::now();
       write_image(frame, setup_.outdir / image.output);
       const double render_ms = ms_between(t0, t1), write_ms = ms_between(t1, Clock::now());
@@ -210,7 +200,8 @@ json batch_line(const BatchMesh& mesh, const BatchImage& image, int views, const
 }
 
 BatchOutcome render_jobs(const std::vector<MeshJob>& jobs, const BatchSetup& setup) {
-  const int threads = setup.options.threads > 0 ? setup.options.threads : tbb::info::default_concurrency();
+  const int threads =
+      setup.options.threads > 0 ? setup.options.threads : tbb::info::default_concurrency();
   Workers workers(jobs, setup);
   // The workers are TBB worker threads and this thread only waits, outside their arena, so a
   // worker that has run out of work is free to join another worker's render (its tiles): N

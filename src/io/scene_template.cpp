@@ -50,7 +50,8 @@ SceneTemplate::SceneTemplate(const std::string& json_text, const std::string& so
     r.expect_array(*objects, "objects");
     if (!objects->empty()) {
       const json& first = (*objects)[0];
-      if (!first.is_object()) r.fail("objects[0]", "expected an object, got " + json_path::describe(first));
+      if (!first.is_object())
+        r.fail("objects[0]", "expected an object, got " + json_path::describe(first));
       for (const char* key : kKeptObjectKeys) {
         if (const json* v = Reader::find(first, key)) kept[key] = *v;
       }

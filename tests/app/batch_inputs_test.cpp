@@ -97,7 +97,8 @@ TEST(BatchInputs, ShardsPartitionTheMeshes) {
 TEST(BatchInputs, ShardSyntaxIsChecked) {
   EXPECT_EQ(parse_shard("2/5").index, 2);
   EXPECT_EQ(parse_shard("2/5").count, 5);
-  for (const char* bad : {"", "1", "5/5", "-1/3", "0/0", "a/b", "1/2x", " 1/2", "1/", "/2", "0/1000001"})
+  for (const char* bad :
+       {"", "1", "5/5", "-1/3", "0/0", "a/b", "1/2x", " 1/2", "1/", "/2", "0/1000001"})
     EXPECT_THROW(parse_shard(bad), InputError) << "'" << bad << "'";
 }
 
