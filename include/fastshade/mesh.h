@@ -37,7 +37,7 @@ struct MeshLoadOptions {
 // else InputError; "no vertex normals in file" if it has none), normalised; Auto takes them if
 // so, else recomputes; Recompute ignores them. Vertices on no face get +Z.
 // weld merges bit-equal positions after loading, before normals (first vertex's normal kept).
-// Thread-safe; OpenMesh reads themselves are serialised.
+// Thread-safe: concurrent loads run in parallel (OpenMesh included).
 Mesh load_mesh(const std::filesystem::path& path, const MeshLoadOptions& options = {});
 
 // Area-weighted vertex normals: each vertex gets the normalised sum of the unnormalised cross

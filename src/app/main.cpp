@@ -117,6 +117,19 @@ int main(int argc, char** argv) {
   sc->add_option("--method", scaling.method, "shading method (default phong)");
   sc->add_option("--out", scaling.out_dir, "directory for scaling.csv, .json, .png (default .)");
   sc->add_flag("--no-plot", scaling.no_plot, "skip scaling.png");
+  BatchCommand batch;
+  CLI::App* bt = app.add_subcommand("batch", "render every mesh of files, directories or list files "
+                                             "(docs/BATCH.md)");
+  bt->add_option("inputs", batch.inputs, "mesh files, directories (searched recursively), list files "
+                                         "(.txt, .lst, .list: one path a line)")->required();
+  bt->add_option("-o,--output", batch.outdir, "output directory (created if missing)")->required();
+  bt->add_option("--scene", batch.scene, "template scene: image, lights, materials, fit camera");
+  bt->add_option("--size", batch.size, "image size WxH (default: the template's)");
+  bt->add_option("--views", batch.views, "views per mesh, turned 360/K degrees about the vertical");
+  bt->add_option("--shard", batch.shard, "render part I of N (I from 0) of the sorted meshes");
+  bt->add_option("--threads", batch.options.threads, "worker threads (0 = all)");
+  bt->add_option("--method", batch.options.method, "shading method (see render --help)");
+  bt->add_option("--format", batch.format, "image format: png, exr or tif");
 
   try {
     app.parse(argc, argv);
@@ -139,6 +152,7 @@ int main(int argc, char** argv) {
     if (*rep) return run_report(report);
     if (*t) return run_tune(tune);
     if (*sc) return run_bench_scaling(scaling);
+    if (*bt) return run_batch(batch);
   } catch (const InputError& e) {
     std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;

@@ -1,5 +1,8 @@
 #include "exec/isa.h"
 
+#include <mutex>
+#include <string>
+
 #include <hwy/highway.h>
 #include <hwy/targets.h>
 
@@ -31,6 +34,13 @@ int64_t cpu_targets() {
 }  // namespace
 
 void select_isa(std::string_view name) {
+  // Renderers are built on several threads at once (fastshade batch), each selecting the same
+  // ISA: the choice is made under a lock and Highway's globals are written only when it
+  // changes, so a thread rendering meanwhile never sees them rewritten.
+  static std::mutex mutex;
+  static std::string selected;  // empty until the first selection
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (name == selected) return;
   const int64_t supported = cpu_targets();
   int64_t chosen = 0;
   if (name != "best") {
@@ -44,6 +54,7 @@ void select_isa(std::string_view name) {
   }
   hwy::SetSupportedTargetsForTest(chosen);  // 0: no restriction, the CPU's best
   hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+  selected = name;
 }
 
 std::string active_isa() {

@@ -7,7 +7,8 @@
 namespace fastshade {
 
 // "scalar" (Highway's EMU128), "sse4", "avx2", "avx512" or "best". Throws InputError
-// ("--isa: ...") for an unknown name or one this CPU cannot run.
+// ("--isa: ...") for an unknown name or one this CPU cannot run. Thread-safe; selecting the ISA
+// already selected changes nothing (so renderers may be built while others render).
 void select_isa(std::string_view name);
 
 std::string active_isa();                  // the name of the target kernels now run on

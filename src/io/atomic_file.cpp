@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <fstream>
+#include <string_view>
 #include <system_error>
 
 #include "fastshade/error.h"
@@ -28,7 +29,30 @@ fs::path temp_path_for(const fs::path& target) {
   return (dir.empty() ? fs::path(".") : dir) / name;
 }
 
+bool all_digits(std::string_view text) {
+  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
 }  // namespace
+
+std::string temp_file_target(const std::string& file_name) {
+  // "." TARGET ".tmp" PID "." COUNTER EXT, EXT being TARGET's extension (maybe empty).
+  static constexpr std::string_view kTmp = ".tmp";
+  if (file_name.empty() || file_name[0] != '.') return "";
+  for (std::size_t at = file_name.rfind(kTmp); at != std::string::npos && at > 1;
+       at = file_name.rfind(kTmp, at - 1)) {
+    const std::string target = file_name.substr(1, at - 1);
+    const std::string ext = fs::path(target).extension().string();
+    const std::string_view rest = std::string_view(file_name).substr(at + kTmp.size());
+    if (rest.size() < ext.size() || rest.substr(rest.size() - ext.size()) != ext) continue;
+    const std::string_view numbers = rest.substr(0, rest.size() - ext.size());
+    const std::size_t dot = numbers.find('.');
+    if (dot != std::string_view::npos && all_digits(numbers.substr(0, dot)) &&
+        all_digits(numbers.substr(dot + 1)))
+      return target;
+  }
+  return "";
+}
 
 TempFile::TempFile(const fs::path& target) : path_(temp_path_for(target)), target_(target) {}
 

@@ -22,6 +22,10 @@ class TempFile {
   std::filesystem::path path_, target_;
 };
 
+// The name of the target a TempFile's file name belongs to ("a.png" for ".a.png.tmp123.4.png"),
+// or "" if `file_name` is not one: lets a program find what a killed run left behind.
+std::string temp_file_target(const std::string& file_name);
+
 // Writes text to `target` through a TempFile; throws InputError naming it on failure.
 void write_text_file(const std::filesystem::path& target, const std::string& text);
 

@@ -1,11 +1,16 @@
-// The OpenMesh side of loading: a checking importer, silenced and serialised reads, and the
-// checks on what OpenMesh built.
+// The OpenMesh side of loading: a checking importer, silenced reads that may run in parallel
+// (one reader object each), and the checks on what OpenMesh built.
 #include "io/openmesh_read.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/IO/reader/OBJReader.hh>
+#include <OpenMesh/Core/IO/reader/OFFReader.hh>
+#include <OpenMesh/Core/IO/reader/PLYReader.hh>
+#include <OpenMesh/Core/IO/reader/STLReader.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
 #include <new>
@@ -191,31 +196,85 @@ class CheckingImporter final : public OpenMesh::IO::ImporterT<OmMesh> {
   std::vector<uint8_t>* file_normal_;
 };
 
-// OpenMesh's readers are global singletons with per-read state, and its log streams are
-// global: one read at a time, with the streams silenced and restored afterwards.
-std::mutex& openmesh_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-class QuietOpenMesh {
+// OpenMesh has one reader object per format (a global that IOManager().read picks by
+// extension), and a reader keeps the state of the read in progress in its members. Concurrent
+// reads therefore each get a reader object of their own: a pool per format, grown on demand
+// (so it holds at most as many readers as reads ever ran at once) and never freed, because a
+// reader's constructor registers it with OpenMesh's IOManager, which keeps the pointer. Reads
+// never go through IOManager().read, so no one iterates its reader list while it grows.
+//
+// OpenMesh's log streams are globals too: they are silenced while any read runs and restored
+// when the last one ends; readers only query them while silenced, so no one toggles them
+// during a read.
+class ReaderPool {
  public:
-  QuietOpenMesh()
-      : err_(omerr().is_enabled()), log_(omlog().is_enabled()), out_(omout().is_enabled()) {
+  // A reader for `format`, for one read; gives it back on destruction.
+  class Lease {
+   public:
+    Lease(ReaderPool& pool, MeshFormat format) : pool_(pool), format_(format) {
+      reader_ = pool_.acquire(format);
+    }
+    ~Lease() { pool_.release(format_, reader_); }
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    OpenMesh::IO::BaseReader& reader() const { return *reader_; }
+
+   private:
+    ReaderPool& pool_;
+    MeshFormat format_;
+    OpenMesh::IO::BaseReader* reader_;
+  };
+
+  static ReaderPool& instance() {
+    static ReaderPool pool;
+    return pool;
+  }
+
+ private:
+  static constexpr std::size_t kFormats = 4;  // MeshFormat's values
+
+  OpenMesh::IO::BaseReader* acquire(MeshFormat format) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (active_reads_++ == 0) quiet_streams();
+    std::vector<OpenMesh::IO::BaseReader*>& idle = idle_[static_cast<std::size_t>(format)];
+    if (!idle.empty()) {
+      OpenMesh::IO::BaseReader* reader = idle.back();
+      idle.pop_back();
+      return reader;
+    }
+    switch (format) {  // leaked on purpose, see above
+      case MeshFormat::Obj: return new OpenMesh::IO::_OBJReader_();
+      case MeshFormat::Off: return new OpenMesh::IO::_OFFReader_();
+      case MeshFormat::Ply: return new OpenMesh::IO::_PLYReader_();
+      case MeshFormat::Stl: return new OpenMesh::IO::_STLReader_();
+    }
+    return nullptr;  // unreachable: every MeshFormat is handled
+  }
+
+  void release(MeshFormat format, OpenMesh::IO::BaseReader* reader) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    idle_[static_cast<std::size_t>(format)].push_back(reader);
+    if (--active_reads_ == 0) restore_streams();
+  }
+
+  void quiet_streams() {
+    err_ = omerr().is_enabled();
+    log_ = omlog().is_enabled();
+    out_ = omout().is_enabled();
     omerr().disable();
     omlog().disable();
     omout().disable();
   }
-  ~QuietOpenMesh() {
+  void restore_streams() const {
     if (err_) omerr().enable();
     if (log_) omlog().enable();
     if (out_) omout().enable();
   }
-  QuietOpenMesh(const QuietOpenMesh&) = delete;
-  QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
 
- private:
-  bool err_, log_, out_;
+  std::mutex mutex_;
+  std::array<std::vector<OpenMesh::IO::BaseReader*>, kFormats> idle_;
+  int active_reads_ = 0;
+  bool err_ = false, log_ = false, out_ = false;  // the streams' state before the reads
 };
 
 std::string count_mismatch(const char* what, uint64_t declared, std::size_t read) {
@@ -239,10 +298,15 @@ void read_checked(const std::filesystem::path& path, bool want_normals, OmRead& 
 
   bool ok = false;
   {
-    const std::lock_guard<std::mutex> lock(openmesh_mutex());
-    const QuietOpenMesh quiet;
+    const ReaderPool::Lease lease(ReaderPool::instance(), pre.format);
+    OpenMesh::IO::BaseReader& reader = lease.reader();
     try {
-      ok = OpenMesh::IO::IOManager().read(path.string(), importer, options);
+      // What IOManager().read does once it has found the reader for the extension.
+      if (reader.can_u_read(path.string())) {
+        importer.prepare();
+        ok = reader.read(path.string(), importer, options);
+        importer.finish();
+      }
     } catch (const std::bad_alloc&) {
       fail(path, "OpenMesh ran out of memory reading it (does a count in it lie?)");
     } catch (const std::exception& e) {

@@ -23,8 +23,8 @@ struct OmRead {
   std::size_t dropped_degenerate_faces = 0;  // repeated vertex indices: OpenMesh cannot store
 };
 
-// Throws InputError("PATH: problem") for anything wrong with the file. OpenMesh's readers keep
-// state in global singletons, so reads are serialised by a process-wide mutex.
+// Throws InputError("PATH: problem") for anything wrong with the file. Thread-safe: concurrent
+// calls read in parallel, each through an OpenMesh reader object of its own.
 void read_checked(const std::filesystem::path& path, bool want_normals, OmRead& out);
 
 }  // namespace fastshade::io

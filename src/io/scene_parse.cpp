@@ -19,6 +19,7 @@
 #include "io/json_file.h"
 #include "io/json_path.h"
 #include "io/scene_camera.h"
+#include "io/scene_file.h"
 
 namespace fastshade {
 namespace {
@@ -316,8 +317,12 @@ Scene parse_scene(const std::string& json_text, const std::string& source,
   return scene;
 }
 
+std::string read_scene_file(const std::filesystem::path& path) {
+  return read_json_file_text(path, "scene file");
+}
+
 Scene load_scene(const std::filesystem::path& path) {
-  const std::string text = read_json_file_text(path, "scene file");
+  const std::string text = read_scene_file(path);
   std::filesystem::path base_dir = path.parent_path();
   if (base_dir.empty()) base_dir = ".";
   return parse_scene(text, path.string(), base_dir);

@@ -6,7 +6,9 @@
 #include <cstring>
 #include <set>
 #include <string>
+#include <thread>
 #include <tuple>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -485,6 +487,35 @@ TEST(Weld, TeapotObjWeldsToItsDistinctPositions) {
   EXPECT_EQ(welded.triangles.size(), plain.triangles.size());
   expect_valid_indices(welded);
   expect_unit_normals(welded);
+}
+
+// Loads run in parallel, each through an OpenMesh reader of its own: every format, read by
+// several threads at once, gives exactly what a lone read gives.
+TEST(LoadMesh, ConcurrentLoadsMatchSerialOnes) {
+  FASTSHADE_REQUIRE_SHARED_MODELS();
+  const char* files[] = {"suzanne.obj", "suzanne.ply", "cow.ply", "fandisk.off", "teapot.stl",
+                         "dragon_11k.ply", "spot.obj"};
+  std::vector<Mesh> serial;
+  for (const char* file : files) serial.push_back(load_mesh(shared_models() / file));
+  constexpr int kThreads = 4;
+  std::vector<std::vector<Mesh>> parallel(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      for (std::size_t i = 0; i < std::size(files); ++i)  // each thread in another order
+        parallel[t].push_back(load_mesh(shared_models() / files[(i + t) % std::size(files)]));
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (int t = 0; t < kThreads; ++t) {
+    for (std::size_t i = 0; i < std::size(files); ++i) {
+      const Mesh& want = serial[(i + t) % std::size(files)];
+      const Mesh& got = parallel[t][i];
+      EXPECT_EQ(got.positions, want.positions) << want.source;
+      EXPECT_EQ(got.normals, want.normals) << want.source;
+      EXPECT_EQ(got.triangles, want.triangles) << want.source;
+    }
+  }
 }
 
 }  // namespace
