@@ -56,29 +56,6 @@ double max_cos_nh(const ClassifyInput& in, const dvec3& l, const dvec3& h_infini
   return std::cos(std::max(0.0, beta - dh));
 }
 
-// A cone around the normals: axis, and the cosine of its half-angle. Narrower than 90 degrees
-// it is convex, so it holds every interpolated normal too, and two cheap bounds follow:
-// max x.n <= cos(max(0, angle(axis, x) - half)), and |sum lambda_i n_i| >= cos(half).
-struct Classifier::NormalCone {
-  dvec3 axis{0.0};
-  double cos_half = -1.0;  // <= 0: too wide (or degenerate) for the cheap bounds
-
-  explicit NormalCone(const dvec3 n[3]) {
-    const dvec3 sum = n[0] + n[1] + n[2];
-    const double len = glm::length(sum);
-    if (!(len > 0.0)) return;
-    axis = sum / len;
-    cos_half = std::min({glm::dot(axis, n[0]), glm::dot(axis, n[1]), glm::dot(axis, n[2])});
-    sin_half = std::sqrt(std::max(0.0, 1.0 - cos_half * cos_half));
-  }
-  double max_dot(const dvec3& x) const {  // x unit: cos(max(0, angle(axis, x) - half))
-    const double ca = glm::dot(axis, x);
-    if (ca >= cos_half) return 1.0;
-    return ca * cos_half + std::sqrt(std::max(0.0, 1.0 - ca * ca)) * sin_half;
-  }
-  double sin_half = 0.0;
-};
-
 namespace {
 // A light whose term stays below this share of the threshold counts as that share, unpowed.
 constexpr double kNegligible = 1e-3;

@@ -72,7 +72,6 @@ class Classifier {
     double specular = 0, diffuse = 0;
     uint64_t lights_with_highlight = 0;
   };
-  struct NormalCone;
   Bounds specular(const ClassifyInput& in, const MaterialTerms& m, const NormalCone* cone) const;
   double diffuse(const ClassifyInput& in, const MaterialTerms& m, const NormalCone* cone) const;
   bool saturates(const ClassifyInput& in, int material) const;

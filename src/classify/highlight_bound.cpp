@@ -42,6 +42,21 @@ double max_dot_over_triangle(const dvec3 n[3], const dvec3& x) {
   return std::min(best, 1.0);
 }
 
+NormalCone::NormalCone(const dvec3 n[3]) {
+  const dvec3 sum = n[0] + n[1] + n[2];
+  const double len = glm::length(sum);
+  if (!(len > 0.0)) return;
+  axis = sum / len;
+  cos_half = std::min({glm::dot(axis, n[0]), glm::dot(axis, n[1]), glm::dot(axis, n[2])});
+  sin_half = std::sqrt(std::max(0.0, 1.0 - cos_half * cos_half));
+}
+
+double NormalCone::max_dot(const dvec3& x) const {
+  const double ca = glm::dot(axis, x);
+  if (ca >= cos_half) return 1.0;
+  return ca * cos_half + std::sqrt(std::max(0.0, 1.0 - ca * ca)) * sin_half;
+}
+
 double min_length_over_triangle(const dvec3 n[3]) {
   // The triangle's closest point to the origin: on an edge (the segments' closest points,
   // robust for the equal or collinear normals of flat and nearly flat triangles), or inside,

@@ -21,6 +21,19 @@ bool inside_cone(const dvec3 n[3], const dvec3& x);
 // test the paper lacks), the largest edge maximum otherwise.
 double max_dot_over_triangle(const dvec3 n[3], const dvec3& x);
 
+// A cone around the normals: axis (their normalised sum) and the cosine and sine of its
+// half-angle. Narrower than 90 degrees it is convex, so it holds every interpolated normal too,
+// and two cheap bounds follow: max x.n <= cos(max(0, angle(axis, x) - half)), and
+// |sum lambda_i n_i| >= cos(half).
+struct NormalCone {
+  dvec3 axis{0.0};
+  double cos_half = -1.0;  // <= 0: too wide (or degenerate) for the cheap bounds
+  double sin_half = 0.0;
+
+  explicit NormalCone(const dvec3 n[3]);
+  double max_dot(const dvec3& x) const;  // x unit: cos(max(0, angle(axis, x) - half))
+};
+
 // min |sum lambda_i n_i| over the barycentric simplex: the shortest interpolated normal before
 // normalisation (the closest point of the triangle n0 n1 n2 to the origin).
 double min_length_over_triangle(const dvec3 n[3]);

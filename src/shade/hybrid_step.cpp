@@ -58,15 +58,9 @@ int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, f
   if (!(q_min > 0.0)) return 1;
   const dvec3 g(in.n[0].gx, in.n[1].gx, in.n[2].gx);
   double g_across = glm::length(g);
-  const dvec3 sum = n_d[0] + n_d[1] + n_d[2];
-  if (glm::length(sum) > 0.0) {
-    const dvec3 axis = glm::normalize(sum);
-    const double cos_h = std::min({glm::dot(axis, n_d[0]), glm::dot(axis, n_d[1]), glm::dot(axis, n_d[2])});
-    if (cos_h > 0.0) {
-      const double s_axis = glm::dot(g, axis);
-      g_across = std::min(g_across, std::abs(s_axis) * std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h)) +
-                                        glm::length(g - s_axis * axis));
-    }
+  if (const NormalCone cone(n_d); cone.cos_half > 0.0) {
+    const double s_axis = glm::dot(g, cone.axis);
+    g_across = std::min(g_across, std::abs(s_axis) * cone.sin_half + glm::length(g - s_axis * cone.axis));
   }
   const double turn = g_across / q_min;          // |u'|, radians per pixel, at most
   const double stretch = glm::length(g) / q_min;  // |g| / |q|, at most
