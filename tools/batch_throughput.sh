@@ -6,7 +6,8 @@
 #
 # The machine is shared, and Linux gives each session a fair share of the CPU (autogroup): while
 # anyone else keeps a core busy, a 2-thread run gets no more CPU than a 1-thread run and the
-# ratio says nothing. So each run also measures how much CPU everything else used meanwhile
+# ratio says nothing. So each run starts only once no other process has been running for a
+# second (procs_running in /proc/stat), measures how much CPU everything else used meanwhile
 # (busy time in /proc/stat minus the run's own), and a pair counts only if, in both runs, the
 # others used under 10 % of one core. Prints every run, then medians over the clean pairs.
 set -euo pipefail
@@ -22,8 +23,19 @@ hz=$(getconf CLK_TCK)
 busy_jiffies() { awk '/^cpu / {print $2 + $3 + $4 + $7 + $8 + $9}' /proc/stat; }
 median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 
+# Waits (at most a minute) until only this script's own reader is running, 4 samples in a row.
+wait_for_idle() {
+  local quiet=0 tries=0
+  while [ $quiet -lt 4 ] && [ $tries -lt 240 ]; do
+    if [ "$(awk '/procs_running/ {print $2}' /proc/stat)" -le 1 ]; then quiet=$((quiet + 1)); else quiet=0; fi
+    tries=$((tries + 1))
+    sleep 0.25
+  done
+}
+
 # One run: prints "RATE WALL_S OTHERS_CPU_FRACTION".
 run() {
+  wait_for_idle
   rm -rf "$out/r"
   local before after start end line rate own
   before=$(busy_jiffies)
