@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Batch throughput on 1 and 2 threads, alternated: every run renders every mesh of a folder
 # into a fresh directory and reports the batch's own images/s (mesh loading included, process
-# start-up not).
-#   bash tools/batch_throughput.sh [MODELS_DIR] [PAIRS] [SIZE] [MAX_ATTEMPTS]
+# start-up not; MODELS_DIR may also be a list file).
+#   bash tools/batch_throughput.sh [MODELS_DIR] [PAIRS] [SIZE] [MAX_ATTEMPTS] [VIEWS]
 #
 # The machine is shared, and Linux gives each session a fair share of the CPU (autogroup): while
 # anyone else keeps a core busy, a 2-thread run gets no more CPU than a 1-thread run and the
-# ratio says nothing. So each run also measures how much CPU everything else used meanwhile
+# ratio says nothing. So each run starts only once the CPUs have been idle for half a second
+# (/proc/stat), measures how much CPU everything else used meanwhile
 # (busy time in /proc/stat minus the run's own), and a pair counts only if, in both runs, the
 # others used under 10 % of one core. Prints every run, then medians over the clean pairs.
 set -euo pipefail
@@ -15,6 +16,7 @@ models=${1:-../shared/models}
 pairs=${2:-7}
 size=${3:-256x256}
 attempts=${4:-200}
+views=${5:-1}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 hz=$(getconf CLK_TCK)
@@ -22,14 +24,27 @@ hz=$(getconf CLK_TCK)
 busy_jiffies() { awk '/^cpu / {print $2 + $3 + $4 + $7 + $8 + $9}' /proc/stat; }
 median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 
+# Waits (at most a minute) until the CPUs were at least 95 % idle over the last half second.
+wait_for_idle() {
+  local a b tries=0
+  while [ $tries -lt 120 ]; do
+    a=$(awk '/^cpu / {print $5 + $6, $2 + $3 + $4 + $5 + $6 + $7 + $8 + $9}' /proc/stat)
+    sleep 0.5
+    b=$(awk '/^cpu / {print $5 + $6, $2 + $3 + $4 + $5 + $6 + $7 + $8 + $9}' /proc/stat)
+    [ "$(echo "$a $b" | awk '{print (($3 - $1) >= 0.95 * ($4 - $2))}')" = 1 ] && return
+    tries=$((tries + 1))
+  done
+}
+
 # One run: prints "RATE WALL_S OTHERS_CPU_FRACTION".
 run() {
+  wait_for_idle
   rm -rf "$out/r"
   local before after start end line rate own
   before=$(busy_jiffies)
   start=$(date +%s.%N)
   line=$(/usr/bin/time -f "%U %S" -o "$out/time" build/fastshade batch "$models" -o "$out/r" \
-         --size "$size" --threads "$1" 2>/dev/null | head -1)
+         --size "$size" --views "$views" --threads "$1" 2>/dev/null | head -1)
   end=$(date +%s.%N)
   after=$(busy_jiffies)
   rate=$(echo "$line" | sed -n 's/.*(\([0-9.]*\) images\/s.*/\1/p')
@@ -46,7 +61,7 @@ for attempt in $(seq "$attempts"); do
   printf '1 thread %6.2f img/s (others %4.2f core)  2 threads %6.2f img/s (others %4.2f core)  ratio %.2f %s\n' \
     "$rate1" "$other1" "$rate2" "$other2" "$(echo "$rate2 / $rate1" | bc -l)" "$([ "$ok" = 1 ] && echo clean || echo -)"
   if [ "$ok" = 1 ]; then
-    echo "$rate1 $rate2" >> "$out/clean"
+    echo "$rate1 $rate2 $wall1 $wall2" >> "$out/clean"
     clean=$((clean + 1))
   fi
 done
@@ -54,5 +69,9 @@ done
 one=$(awk '{print $1}' "$out/clean" | median)
 two=$(awk '{print $2}' "$out/clean" | median)
 ratios=$(awk '{print $2 / $1}' "$out/clean" | median)
+wall1=$(awk '{print $3}' "$out/clean" | median)
+wall2=$(awk '{print $4}' "$out/clean" | median)
 printf 'clean pairs: %d; median images/s: 1 thread %.2f, 2 threads %.2f; ratio of medians %.2f, median of ratios %.2f\n' \
   "$clean" "$one" "$two" "$(echo "$two / $one" | bc -l)" "$ratios"
+printf 'whole process, start-up included: median wall 1 thread %.3f s, 2 threads %.3f s, ratio %.2f\n' \
+  "$wall1" "$wall2" "$(echo "$wall1 / $wall2" | bc -l)"

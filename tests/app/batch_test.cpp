@@ -43,6 +43,16 @@ constexpr const char* kTetrahedron =
 
 class Batch : public testing::ProgramTest {
  protected:
+  // `batch dir_/m -o dir_/out --views VIEWS --size SIZE`, for run_batch in process.
+  BatchCommand command(int views, const std::string& size) const {
+    BatchCommand cmd;
+    cmd.inputs = {(dir_ / "m").string()};
+    cmd.outdir = (dir_ / "out").string();
+    cmd.views = views;
+    cmd.size = size;
+    return cmd;
+  }
+
   // Every line of OUTDIR/results.jsonl.
   std::vector<json> results(const fs::path& outdir) {
     std::vector<json> lines;
@@ -136,11 +146,7 @@ TEST_F(Batch, ResumeSkipsCompleteImagesAndShardsSplitTheRest) {
   for (const char* name : {"m/a.off", "m/b.off", "m/c.obj", "m/d/e.obj"})
     write(name, std::string(name).ends_with(".off") ? kOctahedron : kTetrahedron);
   const fs::path out = dir_ / "out";
-  BatchCommand cmd;
-  cmd.inputs = {(dir_ / "m").string()};
-  cmd.outdir = out.string();
-  cmd.views = 2;
-  cmd.size = "24x24";
+  BatchCommand cmd = command(2, "24x24");
   ASSERT_EQ(run_in_process(cmd), 0);
   const std::set<std::string> first = images_in(out);
   ASSERT_EQ(first.size(), 8u);
@@ -197,9 +203,7 @@ TEST_F(Batch, EveryBadOptionIsAUsageError) {
   write("explicit.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}})");
   fs::create_directories(dir_ / "empty");
   write("in_the_way", "a file");
-  BatchCommand good;
-  good.inputs = {(dir_ / "m").string()};
-  good.outdir = (dir_ / "out").string();
+  const BatchCommand good = command(1, "");
   const std::vector<std::pair<std::function<void(BatchCommand&)>, std::string>> cases = {
       {[](BatchCommand& c) { c.views = 0; }, "--views"},
       {[](BatchCommand& c) { c.views = 361; }, "--views"},
@@ -271,12 +275,7 @@ TEST_F(Batch, InterruptLeavesOnlyWholeImagesAndResumes) {
     EXPECT_TRUE(recorded.count(name)) << name << " has no ok line";
     EXPECT_EQ(read_image(out / name).width, 16) << name;
   }
-  BatchCommand rerun;
-  rerun.inputs = {(dir_ / "m").string()};
-  rerun.outdir = out.string();
-  rerun.views = 90;
-  rerun.size = "16x16";
-  EXPECT_EQ(run_in_process(rerun), 0);
+  EXPECT_EQ(run_in_process(command(90, "16x16")), 0);
   EXPECT_EQ(images_in(out).size(), 90u);
 }
 
