@@ -94,7 +94,9 @@ struct EdgeBound {
 
 }  // namespace detail
 
-// Below this width a row is tested pixel by pixel: cheaper than stepping three bounds.
+// Below this width a row is tested pixel by pixel, cheaper than stepping three bounds (the
+// kernels test a row's pixels in SIMD lanes, raster/row_masks-inl.h, and pack them, shade/
+// span_loop-inl.h); at 16 a row's bits fit the kernels' uint32 masks with room to spare.
 inline constexpr int kNarrowRectPx = 16;
 
 // For a rectangle narrower than kNarrowRectPx: calls row(py, bits) for every row, bit k set

@@ -15,6 +15,7 @@
 
 #include "shade/fast_math-inl.h"
 
+#include "raster/row_masks-inl.h"
 #include "raster/triangle_in_tile.h"
 #include "shade/method.h"
 #include "shade/span_kernels.h"
@@ -126,71 +127,82 @@ inline RowTarget tile_row(const TileTarget& tt, int py) {
           tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin, tt.alpha_xor};
 }
 
-// Triangles at most 4 pixels wide in this tile are shaded in blocks of 4 columns by
-// lanes / 4 rows, so one vector covers what would be several nearly empty row vectors. The
-// few covered pixels move between tile and lanes one by one: cheaper here than gathers.
-inline constexpr int kBlockColumns = 4;
-
-template <typename ShadeFn>
-HWY_INLINE void ShadeBlocks(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
-  const hn::ScalableTag<float> d;
-  const hn::RebindToSigned<decltype(d)> di;
-  const hn::RebindToUnsigned<decltype(d)> du;
+// A narrow triangle's covered pixels, packed into lanes whatever their row: a 6-pixel
+// triangle is one vector instead of three nearly empty row vectors. Pixels move between the
+// tile and the lanes through small arrays; a vector is shaded only if a lane passes the depth
+// test (a dense mesh hides many of its triangles). The lanes' offsets are the span path's
+// (MakeLaneOffsets), so a pixel gets the same bits whichever path drew it.
+template <class D, typename ShadeFn>
+HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
+                                const uint32_t* row_bits, ShadeFn&& shade) {
+  const hn::RebindToSigned<D> di;
+  const hn::RebindToUnsigned<D> du;
   constexpr int kMaxLanes = HWY_MAX_BYTES / sizeof(float);
   const int lanes = static_cast<int>(hn::Lanes(d));
-  const int rows_per_block = lanes / kBlockColumns;
-  const PixelRect& r = tri.rect;
-  uint16_t row_bits[limits::kMaxTilePx];
-  for_each_row_mask(tri.edges, r, [&](int py, uint32_t bits) { row_bits[py - r.y0] = uint16_t(bits); });
-  const auto iota = hn::Iota(di, 0);
-  const auto lane_dx = hn::And(iota, hn::Set(di, kBlockColumns - 1));
-  const auto lane_dy = hn::ShiftRight<2>(iota);
-  static_assert(kBlockColumns == 4, "lane_dy shifts by log2(kBlockColumns)");
-  for (int y = r.y0; y <= r.y1; y += rows_per_block) {
-    uint32_t covered = 0;
-    for (int k = 0; k < rows_per_block && y + k <= r.y1; ++k)
-      covered |= uint32_t(row_bits[y + k - r.y0]) << (kBlockColumns * k);
-    if (!covered) continue;
-    tri.set_up_planes();
-    const auto px = hn::Add(lane_dx, hn::Set(di, r.x0));
-    const auto dy = hn::ConvertTo(d, hn::Add(lane_dy, hn::Set(di, y - tri.bary.ay)));
-    const auto o = MakeLaneOffsets(d, tri.bary, px, dy);
+  alignas(64) int32_t lane_px[kMaxLanes], lane_dy[kMaxLanes], lane_at[kMaxLanes];
+  alignas(64) float lane_z[kMaxLanes];
+  alignas(64) uint32_t lane_rgba[kMaxLanes];
+  tri.set_up_planes();
+  const Barycentrics& bary = tri.bary;
+  auto flush = [&](int n) {
+    for (int i = n; i < lanes; ++i)  // idle lanes repeat lane 0: valid addresses, masked off
+      lane_px[i] = lane_px[0], lane_dy[i] = lane_dy[0], lane_at[i] = lane_at[0];
+    const auto o = MakeLaneOffsets(d, bary, hn::Load(di, lane_px), hn::ConvertTo(d, hn::Load(di, lane_dy)));
     const auto z = EvalPlane(d, tri.depth, o);
-    alignas(64) float lane_depth[kMaxLanes];
-    alignas(64) float lane_z[kMaxLanes];
-    alignas(64) uint32_t lane_rgba[kMaxLanes];
-    hn::Store(hn::Set(d, -HUGE_VALF), d, lane_depth);  // uncovered lanes fail the test
-    auto pixel = [&](int lane) {
-      const int px = r.x0 + (lane & (kBlockColumns - 1)), py = y + (lane >> 2);
-      return std::size_t((py - tt.y_origin) * tt.stride + (px - tt.x_origin));
-    };
-    for (uint32_t bits = covered; bits; bits &= bits - 1) {
-      const int lane = std::countr_zero(bits);
-      lane_depth[lane] = tt.depth[pixel(lane)];
-    }
-    const auto pass = hn::Lt(z, hn::Load(d, lane_depth));
-    if (hn::AllFalse(d, pass)) continue;
+    const auto pass = hn::And(hn::FirstN(d, static_cast<size_t>(n)),
+                              hn::Lt(z, hn::GatherIndex(d, tt.depth, hn::Load(di, lane_at))));
+    if (hn::AllFalse(d, pass)) return;
     hn::Store(z, d, lane_z);
     hn::Store(hn::Xor(shade(d, o), hn::Set(du, tt.alpha_xor)), du, lane_rgba);
     uint8_t pass_bytes[8] = {};
     hn::StoreMaskBits(d, pass, pass_bytes);
     uint32_t passed = 0;
     std::memcpy(&passed, pass_bytes, sizeof(passed));
-    for (uint32_t bits = passed & ((lanes < 32) ? ((1u << lanes) - 1) : ~0u); bits; bits &= bits - 1) {
-      const int lane = std::countr_zero(bits);
-      tt.depth[pixel(lane)] = lane_z[lane];
-      tt.color[pixel(lane)] = lane_rgba[lane];
+    for (; passed; passed &= passed - 1) {
+      const int lane = std::countr_zero(passed);
+      tt.depth[lane_at[lane]] = lane_z[lane];
+      tt.color[lane_at[lane]] = lane_rgba[lane];
     }
+  };
+  const PixelRect& r = tri.rect;
+  int n = 0;
+  for (int py = r.y0; py <= r.y1; ++py)
+    for (uint32_t bits = row_bits[py - r.y0]; bits; bits &= bits - 1) {
+      const int px = r.x0 + std::countr_zero(bits);
+      lane_px[n] = px;
+      lane_dy[n] = py - bary.ay;
+      lane_at[n] = (py - tt.y_origin) * tt.stride + (px - tt.x_origin);
+      if (++n == lanes) {
+        flush(n);
+        n = 0;
+      }
+    }
+  if (n > 0) flush(n);
+}
+
+// Narrow triangles: SIMD row masks, then the covered pixels in the narrowest vectors that hold
+// them (wide vectors mostly masked off cost double on CPUs that split 512-bit operations).
+template <typename ShadeFn>
+HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
+  uint32_t row_bits[limits::kMaxTilePx];
+  const int covered = RowMasks(tri.edges, tri.rect, row_bits);
+  if (covered == 0) return;
+  const hn::ScalableTag<float> d;
+  if (covered <= 4 && hn::Lanes(d) > 4) {
+    ShadePackedWith(hn::CappedTag<float, 4>(), tri, tt, row_bits, shade);
+  } else if (covered <= 8 && hn::Lanes(d) > 8) {
+    ShadePackedWith(hn::CappedTag<float, 8>(), tri, tt, row_bits, shade);
+  } else {
+    ShadePackedWith(d, tri, tt, row_bits, shade);
   }
 }
 
-// Every covered pixel of the triangle in this tile: blocks for narrow triangles when vectors
-// hold at least two block rows, row spans otherwise.
+// Every covered pixel of the triangle in this tile: packed lanes for narrow triangles, row
+// spans otherwise.
 template <typename ShadeFn>
 HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
-  const hn::ScalableTag<float> d;
-  if (tri.rect.x1 - tri.rect.x0 < kBlockColumns && hn::Lanes(d) >= 2 * kBlockColumns) {
-    ShadeBlocks(tri, tt, shade);
+  if (tri.rect.x1 - tri.rect.x0 < kNarrowRectPx) {
+    ShadePacked(tri, tt, shade);
     return;
   }
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {

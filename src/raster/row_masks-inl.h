@@ -1,0 +1,66 @@
+// Coverage of a narrow rectangle as one bit mask per row, in SIMD lanes (per-target, Highway
+// "-inl.h"): for_each_row_mask() in raster/spans.h is the scalar reference, bit for bit.
+#if defined(FASTSHADE_RASTER_ROW_MASKS_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FASTSHADE_RASTER_ROW_MASKS_INL_H_
+#undef FASTSHADE_RASTER_ROW_MASKS_INL_H_
+#else
+#define FASTSHADE_RASTER_ROW_MASKS_INL_H_
+#endif
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+#include <hwy/highway.h>
+
+#include "raster/spans.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace fastshade {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Edge values are integers below 2^51 (frame/edge_function.h), so double lanes hold, add and
+// compare them exactly; int64 lanes would need a multiply AVX2 lacks. bits[r] gets row rect.y0 + r, bit k for column rect.x0 + k; the
+// return value is the number of covered pixels. rect must be narrower than kNarrowRectPx.
+HWY_INLINE int RowMasks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
+  const hn::ScalableTag<double> d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const int columns = rect.x1 - rect.x0 + 1;
+  const auto iota = hn::Iota(d, 0.0);
+  int64_t e_row[3], step_x[3], step_y[3];
+  hn::Vec<decltype(d)> lane_step[3], threshold[3];
+  for (int k = 0; k < 3; ++k) {
+    e_row[k] = te.e[k].at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0));
+    step_x[k] = te.e[k].a * kEdgeUnitsPerPixel;
+    step_y[k] = te.e[k].b * kEdgeUnitsPerPixel;
+    lane_step[k] = hn::Mul(iota, hn::Set(d, static_cast<double>(step_x[k])));
+    threshold[k] = hn::Set(d, static_cast<double>(te.e[k].threshold));
+  }
+  int covered = 0;
+  for (int row = 0; row <= rect.y1 - rect.y0; ++row) {
+    uint32_t row_bits = 0;
+    for (int first = 0; first < columns; first += lanes) {
+      auto in = hn::Lt(iota, hn::Set(d, static_cast<double>(columns - first)));
+      for (int k = 0; k < 3; ++k) {
+        const auto e = hn::Add(hn::Set(d, static_cast<double>(e_row[k] + first * step_x[k])), lane_step[k]);
+        in = hn::And(in, hn::Ge(e, threshold[k]));
+      }
+      uint8_t mask_bytes[8] = {};
+      hn::StoreMaskBits(d, in, mask_bytes);
+      uint32_t vector_bits = 0;
+      std::memcpy(&vector_bits, mask_bytes, sizeof(vector_bits));
+      row_bits |= vector_bits << first;
+    }
+    bits[row] = row_bits;
+    covered += std::popcount(row_bits);
+    for (int k = 0; k < 3; ++k) e_row[k] += step_y[k];
+  }
+  return covered;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace fastshade
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard toggle

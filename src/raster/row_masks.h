@@ -1,0 +1,14 @@
+// The SIMD row masks (raster/row_masks-inl.h) on the process's ISA, for tests: the kernels
+// inline the per-target version.
+#pragma once
+#include <cstdint>
+
+#include "raster/spans.h"
+
+namespace fastshade {
+
+// bits[r]: covered columns of row rect.y0 + r (bit k: column rect.x0 + k); returns how many
+// pixels are covered. rect must be narrower than kNarrowRectPx.
+int row_masks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits);
+
+}  // namespace fastshade

@@ -1,0 +1,69 @@
+// The SIMD row masks (raster/row_masks-inl.h) against the scalar for_each_row_mask, bit for
+// bit, on every compiled ISA: small and huge triangles (edge values near 2^51, where a double
+// must still be exact), every rectangle width below kNarrowRectPx, rectangles partly outside
+// the triangle, and edges through pixel centres (where the top-left rule's threshold decides).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "exec/isa.h"
+#include "raster/row_masks.h"
+
+namespace fastshade {
+namespace {
+
+TriangleEdges random_edges(std::mt19937& rng, int64_t extent_fx, bool on_centres) {
+  std::uniform_int_distribution<int64_t> coord(-extent_fx, extent_fx);
+  int64_t x[3], y[3];
+  for (;;) {
+    for (int i = 0; i < 3; ++i) {
+      // Doubled coordinates around pixel (500, 300); on_centres snaps vertices to pixel centres.
+      x[i] = pixel_centre_fx(500) + coord(rng);
+      y[i] = pixel_centre_fx(300) + coord(rng);
+      if (on_centres) {
+        x[i] = pixel_centre_fx(x[i] / kEdgeUnitsPerPixel);
+        y[i] = pixel_centre_fx(y[i] / kEdgeUnitsPerPixel);
+      }
+    }
+    const int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+    if (area == 0) continue;
+    if (area < 0) std::swap(x[1], x[2]), std::swap(y[1], y[2]);
+    return edges_of(x, y);
+  }
+}
+
+TEST(RowMasks, SimdEqualsScalarOnEveryIsa) {
+  int isas = 0;
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    ++isas;
+    std::mt19937 rng(7);
+    // Triangles from a few pixels to the guard band's 2^24 doubled units.
+    const int64_t extents[] = {4 * kEdgeUnitsPerPixel, 20 * kEdgeUnitsPerPixel, int64_t(1) << 24};
+    std::uniform_int_distribution<int> offset(-12, 12), height(0, 40);
+    long long covered_total = 0;
+    for (int64_t extent : extents)
+      for (int trial = 0; trial < 400; ++trial) {
+        const TriangleEdges te = random_edges(rng, extent, trial % 4 == 0);
+        for (int width = 0; width < kNarrowRectPx; ++width) {
+          const int x0 = 500 + offset(rng), y0 = 300 + offset(rng);
+          const PixelRect rect{x0, y0, x0 + width, y0 + height(rng)};
+          uint32_t simd[64] = {};
+          const int covered = row_masks(te, rect, simd);
+          int expected_covered = 0;
+          for_each_row_mask(te, rect, [&](int py, uint32_t bits) {
+            ASSERT_EQ(simd[py - rect.y0], bits) << isa << " row " << py - rect.y0 << " width " << width;
+            expected_covered += __builtin_popcount(bits);
+          });
+          ASSERT_EQ(covered, expected_covered) << isa;
+          covered_total += covered;
+        }
+      }
+    EXPECT_GT(covered_total, 10000) << isa << ": the cases must cover pixels to test anything";
+  }
+  select_isa("best");
+  EXPECT_GE(isas, 1);
+}
+
+}  // namespace
+}  // namespace fastshade
