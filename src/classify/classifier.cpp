@@ -81,8 +81,25 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
       brightest += glm::dvec3(light.color * m.kd);
     }
     t.may_saturate = std::max({brightest.r, brightest.g, brightest.b}) > 1.0;
+    ConeBatchTerms batch;
+    batch.spec_threshold = p.spec_threshold;
+    batch.gouraud_budget = p.gouraud_budget;
+    batch.negligible_share = kNegligible;
+    batch.paper_rule = p.paper_rule;
+    for (std::size_t i = 0; i < k.lights.size(); ++i) {
+      const LightTerms& lt = t.lights[i];
+      const dvec3 h(k.lights[i].h_view), l(k.lights[i].l_view);
+      batch.lights.push_back({{h.x, h.y, h.z}, {l.x, l.y, l.z}, lt.spec_weight, lt.cos_negligible,
+                              lt.cos_share, lt.cos_alone, lt.diffuse_weight});
+    }
+    batch_.push_back(std::move(batch));
     materials_.push_back(std::move(t));
   }
+}
+
+const ConeBatchTerms* Classifier::cone_batch_terms(int material) const {
+  if (shade_.local_viewer || shade_.two_sided || materials_[material].may_saturate) return nullptr;
+  return &batch_[material];
 }
 
 Classifier::Bounds Classifier::specular(const ClassifyInput& in, const MaterialTerms& m,

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "classify/cone_batch.h"
 #include "classify/highlight_bound.h"
 #include "core/limits.h"
 #include "frame/shade_constants.h"
@@ -53,6 +54,10 @@ class Classifier {
  public:
   Classifier(const ShadeConstants& shade, const ClassifierParams& params);
   Classification classify(const ClassifyInput& in, int material) const;
+  // The constants for deciding this material's triangles in lanes (classify/cone_batch.h), or
+  // nullptr where the lanes cannot match classify(): local viewer, two-sided lighting (the
+  // normals depend on facing), or colours that may saturate.
+  const ConeBatchTerms* cone_batch_terms(int material) const;
   const ShadeConstants& shade() const { return shade_; }
 
  private:
@@ -79,6 +84,7 @@ class Classifier {
   const ShadeConstants& shade_;
   ClassifierParams params_;
   std::vector<MaterialTerms> materials_;
+  std::vector<ConeBatchTerms> batch_;  // per material
 };
 
 }  // namespace fastshade

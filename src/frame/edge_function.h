@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 
+#include "core/force_inline.h"
 #include "frame/frame.h"
 
 namespace fastshade {
@@ -14,7 +15,7 @@ namespace fastshade {
 struct Edge {
   int64_t a, b, c;
   int64_t threshold;
-  int64_t at(int64_t x_fx, int64_t y_fx) const { return a * x_fx + b * y_fx + c; }
+  FASTSHADE_FORCE_INLINE int64_t at(int64_t x_fx, int64_t y_fx) const { return a * x_fx + b * y_fx + c; }
   bool covers(int64_t x_fx, int64_t y_fx) const { return at(x_fx, y_fx) >= threshold; }
 };
 
@@ -30,7 +31,7 @@ inline constexpr int64_t pixel_centre_fx(int64_t px) {
 
 // The edge from a to b, in doubled coordinates. Triangles are wound so that their area is
 // positive: clockwise on the y-down screen.
-inline Edge make_edge(int64_t xa, int64_t ya, int64_t xb, int64_t yb) {
+FASTSHADE_FORCE_INLINE Edge make_edge(int64_t xa, int64_t ya, int64_t xb, int64_t yb) {
   const int64_t dx = xb - xa, dy = yb - ya;
   Edge e;
   e.a = -dy;
@@ -47,7 +48,7 @@ struct TriangleEdges {
 };
 
 // Edge k runs from corner k+1 to corner k+2 (mod 3), so E_k(corner k) is the area.
-inline TriangleEdges edges_of(const int64_t x[3], const int64_t y[3]) {
+FASTSHADE_FORCE_INLINE TriangleEdges edges_of(const int64_t x[3], const int64_t y[3]) {
   TriangleEdges te;
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
@@ -57,7 +58,7 @@ inline TriangleEdges edges_of(const int64_t x[3], const int64_t y[3]) {
 }
 
 // The whole triangle's edges: what attributes are interpolated over.
-inline TriangleEdges shape_edges(const SetupTriangle& t) {
+FASTSHADE_FORCE_INLINE TriangleEdges shape_edges(const SetupTriangle& t) {
   const int64_t x[3] = {2 * int64_t(t.x_fx[0]), 2 * int64_t(t.x_fx[1]), 2 * int64_t(t.x_fx[2])};
   const int64_t y[3] = {2 * int64_t(t.y_fx[0]), 2 * int64_t(t.y_fx[1]), 2 * int64_t(t.y_fx[2])};
   return edges_of(x, y);
@@ -87,7 +88,7 @@ inline void sierpinski_corners(const SetupTriangle& t, int part, int64_t x[3], i
 inline int sierpinski_part(const SetupTriangle& t) { return (t.flags >> kSierpinskiShift) & 7; }
 
 // What coverage is tested against: the triangle, or its Sierpinski part.
-inline TriangleEdges triangle_edges(const SetupTriangle& t) {
+FASTSHADE_FORCE_INLINE TriangleEdges triangle_edges(const SetupTriangle& t) {
   const int part = sierpinski_part(t);
   if (part == 0) return shape_edges(t);
   int64_t x[3], y[3];
@@ -96,7 +97,7 @@ inline TriangleEdges triangle_edges(const SetupTriangle& t) {
 }
 
 // Twice the area in vertex fixed point; edge values (doubled coordinates) are 4x larger.
-inline int64_t doubled_area(const SetupTriangle& t) {
+FASTSHADE_FORCE_INLINE int64_t doubled_area(const SetupTriangle& t) {
   return (int64_t(t.x_fx[1]) - t.x_fx[0]) * (int64_t(t.y_fx[2]) - t.y_fx[0]) -
          (int64_t(t.x_fx[2]) - t.x_fx[0]) * (int64_t(t.y_fx[1]) - t.y_fx[0]);
 }

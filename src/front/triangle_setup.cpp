@@ -25,11 +25,37 @@ class ChunkBuilder {
       : p_(p), attrs_(attrs), chunk_(chunk) {}
 
   // The input triangle the next emits come from (its pieces after clipping share its path).
-  void begin_source(const uint32_t* idx, uint16_t material) {
+  void begin_source(const uint32_t* idx, uint16_t material, ShadePath planned) {
     source_ = idx;
     material_ = material;
+    planned_ = planned;
     path_[0] = path_[1] = ShadePath::Unclassified;
   }
+
+  // Decides in SIMD lanes what the cone bounds settle for source triangles [first, last)
+  // (classify/cone_batch.h): planned[t - first], Unclassified where classify() must look.
+  void plan_paths(const SceneGeometry& g, uint32_t first, uint32_t last, ShadePath* planned) const {
+    std::fill(planned, planned + (last - first), ShadePath::Unclassified);
+    if (!p_.classifier) return;
+    alignas(64) double normals[9][kPlanBlock];
+    NormalsSoA soa;
+    for (int k = 0; k < 9; ++k) soa.n[k] = normals[k];
+    for (uint32_t run = first; run < last;) {  // runs of one material
+      const uint16_t material = g.triangle_material[run];
+      uint32_t end = run + 1;
+      while (end < last && g.triangle_material[end] == material) ++end;
+      if (const ConeBatchTerms* terms = p_.classifier->cone_batch_terms(material)) {
+        for (uint32_t t = run; t < end; ++t)
+          for (int v = 0; v < 3; ++v) {
+            const glm::vec3& n = attrs_.n_view[g.triangles[t][v]];
+            for (int c = 0; c < 3; ++c) normals[3 * v + c][t - run] = n[c];
+          }
+        decide_gouraud_batch(*terms, soa, end - run, planned + (run - first));
+      }
+      run = end;
+    }
+  }
+  static constexpr uint32_t kPlanBlock = 256;  // source triangles planned at once (18 KB of normals)
 
   // Culls, winds and bounds one triangle of snapped vertices.
   void emit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t attr_a,
@@ -90,6 +116,10 @@ class ChunkBuilder {
   ShadePath path(bool back_facing) {
     ShadePath& cached = path_[back_facing];
     if (cached != ShadePath::Unclassified) return cached;
+    if (planned_ != ShadePath::Unclassified) {  // settled in lanes: Gouraud, no highlight
+      ++chunk_.paths.triangles[static_cast<int>(planned_)];
+      return cached = planned_;
+    }
     const ShadeConstants& k = p_.classifier->shade();
     // Two-sided lighting shades a back face with its normals flipped (shade/phong-inl.h).
     const double flip = (k.two_sided && back_facing) ? -1.0 : 1.0;
@@ -166,6 +196,7 @@ class ChunkBuilder {
   Chunk& chunk_;
   const uint32_t* source_ = nullptr;
   uint16_t material_ = 0;
+  ShadePath planned_ = ShadePath::Unclassified;
   ShadePath path_[2] = {};  // per facing: front, back
 };
 
@@ -182,7 +213,10 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   ChunkBuilder builder(params, attrs, chunk);
   const uint8_t* flags = pv.flags.data();
   const ScreenVertex* screen = pv.screen.data();
+  ShadePath planned[ChunkBuilder::kPlanBlock];
   for (uint32_t t = first; t < last; ++t) {
+    if ((t - first) % ChunkBuilder::kPlanBlock == 0)
+      builder.plan_paths(g, t, std::min(t + ChunkBuilder::kPlanBlock, last), planned);
     const auto& idx = g.triangles[t];
     const uint8_t f0 = flags[idx[0]], f1 = flags[idx[1]], f2 = flags[idx[2]];
     if ((f0 | f1 | f2) & kNonFinite) {
@@ -193,7 +227,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
       ++chunk.culled;
       continue;
     }
-    builder.begin_source(idx.data(), g.triangle_material[t]);
+    builder.begin_source(idx.data(), g.triangle_material[t], planned[(t - first) % ChunkBuilder::kPlanBlock]);
     if (!((f0 | f1 | f2) & kNeedsClip))
       builder.emit(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2],
                    g.triangle_material[t]);

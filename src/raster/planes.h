@@ -22,7 +22,7 @@ struct Barycentrics {
   double d_dx[3], d_dy[3];  // per pixel
 };
 
-inline Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te) {
+FASTSHADE_FORCE_INLINE Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te) {
   Barycentrics b;
   // The anchor: the first pixel centre of the whole triangle's box (as triangle setup bounds
   // it), so that the parts of a split triangle evaluate their parent's planes bit for bit.
@@ -39,7 +39,7 @@ inline Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te
   return b;
 }
 
-inline Plane make_plane(const Barycentrics& b, double q0, double q1, double q2) {
+FASTSHADE_FORCE_INLINE Plane make_plane(const Barycentrics& b, double q0, double q1, double q2) {
   Plane p;
   p.v0 = static_cast<float>(q0 * b.at_anchor[0] + q1 * b.at_anchor[1] + q2 * b.at_anchor[2]);
   p.gx = static_cast<float>(q0 * b.d_dx[0] + q1 * b.d_dx[1] + q2 * b.d_dx[2]);

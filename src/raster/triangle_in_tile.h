@@ -20,7 +20,7 @@ struct TriangleInTile {
   Plane depth;
   bool has_planes = false;
 
-  void set_up_planes() {
+  FASTSHADE_FORCE_INLINE void set_up_planes() {
     if (has_planes) return;
     bary = barycentrics(*tri, sierpinski_part(*tri) ? shape_edges(*tri) : edges);
     depth = make_plane(bary, tri->depth[0], tri->depth[1], tri->depth[2]);
@@ -29,7 +29,7 @@ struct TriangleInTile {
 };
 
 // False if the triangle's bounding box misses the tile rectangle.
-inline bool prepare_triangle(const SetupTriangle& t, const PixelRect& tile, TriangleInTile& out) {
+FASTSHADE_FORCE_INLINE bool prepare_triangle(const SetupTriangle& t, const PixelRect& tile, TriangleInTile& out) {
   out.rect = {std::max<int>(t.px_min[0], tile.x0), std::max<int>(t.px_min[1], tile.y0),
               std::min<int>(t.px_max[0], tile.x1), std::min<int>(t.px_max[1], tile.y1)};
   if (out.rect.x0 > out.rect.x1 || out.rect.y0 > out.rect.y1) return false;

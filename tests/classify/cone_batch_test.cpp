@@ -1,0 +1,124 @@
+// The lanes' first look (classify/cone_batch.h) against its scalar reference, the whole
+// classifier: on every compiled ISA and batch length 0..2W+1 and beyond, a triangle settled in
+// lanes is one classify() sends to Gouraud too, and the lanes settle most of the triangles
+// that classify() decides on the cone alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "classify/classifier.h"
+#include "exec/isa.h"
+
+namespace fastshade {
+namespace {
+
+glm::vec3 random_unit(std::mt19937& rng) {
+  std::normal_distribution<float> g;
+  for (;;) {
+    const glm::vec3 v(g(rng), g(rng), g(rng));
+    if (glm::length(v) > 1e-3f) return glm::normalize(v);
+  }
+}
+
+// Vertex normals as a mesh has them (float): around a random axis, spread from flat to wide.
+std::vector<glm::vec3> random_triangles(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<glm::vec3> normals;
+  for (int t = 0; t < count; ++t) {
+    const glm::vec3 axis = random_unit(rng);
+    const float spread = std::pow(10.0f, -3.0f * u(rng));  // 1e-3 .. 1 rad
+    for (int v = 0; v < 3; ++v) normals.push_back(glm::normalize(axis + spread * random_unit(rng)));
+  }
+  return normals;
+}
+
+ShadeConstants scene(int lights, float shininess, float ks) {
+  ShadeConstants k;
+  const glm::vec3 dirs[] = {glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(-1, 0.2f, 0.3f)),
+                            glm::vec3(0, 0, 1)};
+  for (int i = 0; i < lights; ++i)
+    k.lights.push_back({dirs[i], glm::normalize(dirs[i] + glm::vec3(0, 0, 1)), glm::vec3(1.2f / float(lights))});
+  MaterialConstants m{};
+  m.kd = glm::vec3(0.7f), m.ks = glm::vec3(ks), m.shininess = shininess, m.shininess_d = shininess;
+  k.materials = {m};
+  k.ambient = glm::vec3(0.1f);
+  return k;
+}
+
+TEST(ConeBatch, SettlesOnlyWhatClassifySendsToGouraud) {
+  std::mt19937 rng(5);
+  const std::vector<glm::vec3> normals = random_triangles(rng, 4000);
+  struct Setting {
+    int lights;
+    float shininess, ks;
+    ClassifierParams params;
+  };
+  const Setting settings[] = {{1, 32, 0.5f, {1.0 / 510.0, 1.0 / 255.0, false}},
+                              {2, 100, 0.3f, {1.0 / 510.0, 2.0 / 255.0, false}},
+                              {3, 10, 0.5f, {1.0 / 255.0, 4.0 / 255.0, false}},
+                              {1, 1000, 1.0f, {1.0 / 510.0, 1.0 / 255.0, true}},
+                              {1, 5, 0.0f, {1.0 / 510.0, 0.5 / 255.0, false}}};
+  int isas = 0;
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    ++isas;
+    for (const Setting& s : settings) {
+      const ShadeConstants k = scene(s.lights, s.shininess, s.ks);
+      const Classifier classifier(k, s.params);
+      const ConeBatchTerms* terms = classifier.cone_batch_terms(0);
+      ASSERT_NE(terms, nullptr);
+      // Batch lengths 0..2W+1 for every width, then one long batch.
+      std::vector<std::size_t> lengths;
+      for (std::size_t n = 0; n <= 17; ++n) lengths.push_back(n);
+      lengths.push_back(normals.size() / 3);
+      int settled = 0, gouraud = 0;
+      for (std::size_t count : lengths) {
+        std::vector<double> soa(9 * count);
+        NormalsSoA view;
+        for (int c = 0; c < 9; ++c) view.n[c] = soa.data() + c * count;
+        for (std::size_t t = 0; t < count; ++t)
+          for (int v = 0; v < 3; ++v)
+            for (int c = 0; c < 3; ++c) soa[(3 * v + c) * count + t] = normals[3 * t + v][c];
+        std::vector<ShadePath> path(count + 1, ShadePath::Specular);  // a sentinel past the end
+        decide_gouraud_batch(*terms, view, count, path.data());
+        ASSERT_EQ(path[count], ShadePath::Specular) << isa << ": wrote past the batch";
+        for (std::size_t t = 0; t < count; ++t) {
+          ClassifyInput in;
+          for (int v = 0; v < 3; ++v) in.n[v] = dvec3(normals[3 * t + v]);
+          const ShadePath expected = classifier.classify(in, 0).path;
+          ASSERT_TRUE(path[t] == ShadePath::Unclassified || path[t] == ShadePath::GouraudDiffuse) << isa;
+          if (path[t] == ShadePath::GouraudDiffuse)
+            ASSERT_EQ(expected, ShadePath::GouraudDiffuse) << isa << " triangle " << t << " of " << count;
+          if (count == lengths.back()) {
+            settled += path[t] == ShadePath::GouraudDiffuse;
+            gouraud += expected == ShadePath::GouraudDiffuse;
+          }
+        }
+      }
+      // The exact bounds send some triangles to Gouraud that the cone cannot; most go on the
+      // cone alone, or the lanes would save nothing.
+      EXPECT_GT(gouraud, 100) << isa << ": the cases must reach Gouraud to test anything";
+      EXPECT_GE(settled, gouraud * 6 / 10) << isa << " settled " << settled << " of " << gouraud;
+    }
+  }
+  select_isa("best");
+  EXPECT_GE(isas, 1);
+}
+
+TEST(ConeBatch, NoLanesWhereTheyCannotMatchClassify) {
+  ShadeConstants k = scene(1, 32, 0.5f);
+  k.local_viewer = true;
+  EXPECT_EQ(Classifier(k, {}).cone_batch_terms(0), nullptr);
+  k = scene(1, 32, 0.5f);
+  k.two_sided = true;
+  EXPECT_EQ(Classifier(k, {}).cone_batch_terms(0), nullptr);
+  k = scene(1, 32, 0.5f);
+  k.ambient = glm::vec3(0.5f);  // 0.5 + 1.2 * 0.7 > 1: colours may clamp
+  EXPECT_EQ(Classifier(k, {}).cone_batch_terms(0), nullptr);
+}
+
+}  // namespace
+}  // namespace fastshade
