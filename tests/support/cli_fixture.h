@@ -6,12 +6,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 namespace fastshade::test {
 
@@ -69,6 +72,17 @@ class CliFixture : public ::testing::Test {
       if (n != "stdout.txt" && n != "stderr.txt") names.insert(n);
     }
     return names;
+  }
+  // The largest channel error of `image` against the reference render of `scene` (a scene file,
+  // then any flags such as --srgb), in whole 8-bit steps (compare's float path may add a few
+  // 1e-6 LSB), both measured by the program.
+  double max_error_against_reference(const std::string& scene, const fs::path& image) {
+    const fs::path reference = dir_ / "reference.png";
+    EXPECT_EQ(run("render " + scene + " -o " + reference.string() + " --method reference").exit_code, 0);
+    const Outcome r = run("compare " + image.string() + " " + reference.string() + " --json");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    fs::remove(reference);
+    return std::round(nlohmann::json::parse(r.out)["max_abs_lsb"].get<double>());
   }
   std::string scene_with(const std::string& objects, int width = 64) {
     return R"({"image": {"width": )" + std::to_string(width) +
