@@ -21,7 +21,7 @@ namespace fastshade::test {
 namespace fs = std::filesystem;
 
 struct Outcome {
-  int exit_code;
+  int exit_code;  // -1 if the program did not exit normally (a signal)
   std::string out, err;
 };
 
@@ -32,7 +32,8 @@ inline std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-// Runs the program in a fresh directory per test, removed afterwards.
+// A test of the program with a fresh scratch directory of its own (removed afterwards), where
+// the program's output is captured and test files are written.
 class CliFixture : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -51,8 +52,10 @@ class CliFixture : public ::testing::Test {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "stdout.txt"),
             slurp(dir_ / "stderr.txt")};
   }
+  // Writes `text` to dir_/name, creating the directories on the way.
   fs::path write(const std::string& name, const std::string& text) {
     const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
     std::ofstream(p, std::ios::binary) << text;
     return p;
   }
