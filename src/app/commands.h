@@ -12,12 +12,21 @@ class App;
 
 namespace fastshade {
 
+// Reads render flags ("--method", "hybrid", "--max-error", "2") into RenderOptions exactly as
+// `fastshade render` would (--config included), so `report` knows every flag `render` knows.
+// Throws InputError naming the flags for an unknown flag or a bad value; does not validate().
+using RenderFlagsParser = std::function<RenderOptions(const std::vector<std::string>& flags)>;
+
 struct RenderCommand {
   std::string scene;  // empty: the embedded default scene
   std::string output;
   std::string stats_path;
   int frames = 1;
   bool explain = false;  // print the classifier's plan and what was left out
+  // --max-error without --method: render with the fastest configuration measured within
+  // options.max_error on this scene (app/calibration.h), whose candidates `parse_render_flags` reads.
+  bool calibrate = false;
+  RenderFlagsParser parse_render_flags;
   RenderOptions options;
 };
 int run_render(const RenderCommand& cmd);
@@ -46,10 +55,12 @@ int run_brdf_table(const std::string& isa);
 // config file and key for a bad config.
 RenderOptions resolve_render_options(const CLI::App& render_cli, const RenderOptions& from_flags);
 
-// Reads render flags ("--method", "hybrid", "--max-error", "2") into RenderOptions exactly as
-// `fastshade render` would (--config included), so `report` knows every flag `render` knows.
-// Throws InputError naming the flags for an unknown flag or a bad value; does not validate().
-using RenderFlagsParser = std::function<RenderOptions(const std::vector<std::string>& flags)>;
+// Whether `render` was asked for error-budget rendering: --max-error given without --method or
+// --config (either of which chooses the method, and --max-error then keeps its meaning for it).
+// Throws InputError for a method option given with it (--brdf, --spec-threshold...: the
+// calibration chooses those).
+bool calibration_requested(const CLI::App& render_cli);
+
 // The parser of the `render` subcommand, whose options are bound to `bound`.
 RenderFlagsParser render_flags_parser(CLI::App& render_cli, RenderOptions& bound);
 

@@ -27,7 +27,10 @@ int main(int argc, char** argv) {
   r->add_option("--isa", render.options.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
   r->add_flag("--srgb", render.options.srgb, "encode with the sRGB curve (default: linear)");
   r->add_option("--max-error", render.options.max_error,
-                "auto, hybrid, --normals adaptive: error budget in 8-bit steps (default 1)");
+                "error budget in 8-bit steps, 0 to 255 (default 1). Without --method (and --config): "
+                "renders with the fastest configuration whose error against reference on this scene "
+                "stays within it, found by a calibration pass that says what it picked (docs/TUNING.md); "
+                "with --method: the budget of auto, hybrid and --normals adaptive");
   r->add_option("--gouraud", render.options.gouraud,
                 "gouraud: increments, or sierpinski (large triangles split at edge midpoints)");
   r->add_option("--normals", render.options.normals,
@@ -143,8 +146,12 @@ int main(int argc, char** argv) {
   }
   try {
     if (*r) {
-      render.options = resolve_render_options(*r, render.options);
-      return run_render(render);
+      // A copy: the calibration reads its candidates through *r's parser, which rewrites `render`.
+      RenderCommand cmd = render;
+      cmd.options = resolve_render_options(*r, render.options);
+      cmd.calibrate = calibration_requested(*r);
+      cmd.parse_render_flags = report.parse_render_flags;
+      return run_render(cmd);
     }
     if (*c) return run_compare(image_a, image_b, compare_json);
     if (*i) return run_info(mesh, info_json);

@@ -50,7 +50,7 @@ void Progress::advance(double work, std::string_view what) {
 }
 
 void Progress::finish() {
-  if (finished_) return;
+  if (finished_ || !out_) return;
   finished_ = true;
   show("done", true);
   if (terminal_) std::fputc('\n', out_);
@@ -58,6 +58,7 @@ void Progress::finish() {
 }
 
 void Progress::show(std::string_view what, bool force) {
+  if (!out_) return;
   const Clock::time_point now = Clock::now();
   const double since_shown = std::chrono::duration<double>(now - last_shown_).count();
   if (!force && since_shown < (terminal_ ? kTerminalRedrawS : kPlainLineS)) return;

@@ -16,7 +16,8 @@ std::string progress_line(double done, double total, double eta_s, std::string_v
 
 class Progress {
  public:
-  // `total`: the work in any unit (the caller's estimate of cost); `out` a terminal or not.
+  // `total`: the work in any unit (the caller's estimate of cost); `out` a terminal or not, or
+  // null to show nothing (a bar would only clutter a log of a short run).
   Progress(double total, std::FILE* out, bool terminal);
   ~Progress();
   Progress(const Progress&) = delete;
@@ -24,6 +25,8 @@ class Progress {
 
   // Adds `work` done and shows `what` is under way now.
   void advance(double work, std::string_view what);
+  // A better estimate of the whole work, once known.
+  void set_total(double total) { total_ = total; }
   // Ends the bar (a newline on a terminal).
   void finish();
 

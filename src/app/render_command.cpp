@@ -1,7 +1,9 @@
 #include <cstdio>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
+#include "app/calibration.h"
 #include "app/commands.h"
 #include "fastshade/error.h"
 #include "fastshade/image.h"
@@ -66,10 +68,22 @@ int run_render(const RenderCommand& cmd) {
   }
   const Scene scene = cmd.scene.empty() ? parse_scene(default_scene_json(), "<default scene>", ".")
                                         : load_scene(cmd.scene);
+  RenderOptions options = cmd.options;
+  std::optional<Calibration> calibration;
+  if (cmd.calibrate) {
+    const std::string name = cmd.scene.empty() ? "<default scene>" : std::filesystem::path(cmd.scene).filename().string();
+    calibration = calibrate(scene, name, cmd.options, cmd.parse_render_flags);
+    options = calibration->candidates[calibration->picked].options;
+    std::printf("%s\n", calibration_summary(*calibration).c_str());
+  }
   RenderStats stats;
-  const Image image = render(scene, cmd.options, cmd.frames, &stats);
+  const Image image = render(scene, options, cmd.frames, &stats);
   write_image(image, cmd.output);
-  if (!cmd.stats_path.empty()) write_text_file(cmd.stats_path, stats_json(stats).dump(2) + "\n");
+  if (!cmd.stats_path.empty()) {
+    nlohmann::json json = stats_json(stats);
+    if (calibration) json["calibration"] = calibration_json(*calibration);
+    write_text_file(cmd.stats_path, json.dump(2) + "\n");
+  }
   std::printf(
       "%s: %dx%d, %s, %lld triangles (%lld drawn, %lld dropped, %lld culled), %d threads, "
       "tile %d, %s: %.2f ms (front end %.2f, binning %.2f, raster+shade %.2f)%s, %.1f Mpix/s\n",
@@ -79,7 +93,7 @@ int run_render(const RenderCommand& cmd) {
       stats.median.binning, stats.median.raster_shade,
       stats.frames > 1 ? (" median of " + std::to_string(stats.frames)).c_str() : "",
       stats.mpix_per_s());
-  if (cmd.explain) print_explanation(stats, cmd.options);
+  if (cmd.explain) print_explanation(stats, options);
   return 0;
 }
 

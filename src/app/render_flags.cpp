@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/calibration.h"
 #include "app/commands.h"
 #include "fastshade/error.h"
 #include "io/render_config.h"
@@ -28,6 +29,17 @@ RenderOptions resolve_render_options(const CLI::App& render_cli, const RenderOpt
     for (const RenderConfigKey& key : kRenderConfigKeys)
       if (key.classifying_only && !given(key)) copy_option(key, RenderOptions{}, options);
   return options;
+}
+
+bool calibration_requested(const CLI::App& render_cli) {
+  const auto given = [&](std::string_view flag) { return render_cli.get_option(std::string(flag))->count() > 0; };
+  if (!given("--max-error") || given("--method") || given("--config")) return false;
+  for (const RenderConfigKey& key : kRenderConfigKeys) {
+    if (!is_calibration_run_key(key.key) && given(key.flag))
+      throw InputError(std::string(key.flag), "chosen by the calibration that --max-error without --method runs; "
+                                              "give --method to set it");
+  }
+  return true;
 }
 
 RenderFlagsParser render_flags_parser(CLI::App& render_cli, RenderOptions& bound) {

@@ -44,30 +44,19 @@ struct Plan {
   std::vector<SkippedConfig> skipped;
 };
 
-bool method_known(const std::string& name) {
-  const std::vector<MethodDescription> methods = list_methods();
-  return std::any_of(methods.begin(), methods.end(), [&](const auto& m) { return m.name == name; });
-}
-
 // A table line this build cannot run is skipped; a --config line it cannot run is bad usage.
 Plan plan_configs(const ReportCommand& cmd) {
   Plan plan;
   for (ReportConfig& c : configs_to_measure(cmd.configs)) {
     std::string why;
     RenderOptions options;
-    if (!method_known(c.method)) {
-      why = "no method '" + c.method + "' in this build";
-    } else {
-      std::vector<std::string> flags = {"--method", c.method};
-      flags.insert(flags.end(), c.flags.begin(), c.flags.end());
-      try {
-        options = cmd.parse_render_flags(flags);
-        options.threads = cmd.threads;
-        options.isa = cmd.isa;
-        validate(options);
-      } catch (const InputError& e) {
-        why = e.what();
-      }
+    try {
+      options = config_options(c, cmd.parse_render_flags, [&](RenderOptions& o) {
+        o.threads = cmd.threads;
+        o.isa = cmd.isa;
+      });
+    } catch (const InputError& e) {
+      why = e.what();
     }
     if (why.empty()) {
       plan.configs.push_back({std::move(c), options});

@@ -7,6 +7,15 @@
 
 namespace fastshade {
 
+namespace {
+
+bool method_known(const std::string& name) {
+  const std::vector<MethodDescription> methods = list_methods();
+  return std::any_of(methods.begin(), methods.end(), [&](const auto& m) { return m.name == name; });
+}
+
+}  // namespace
+
 ReportConfig parse_config(std::string_view line, const std::string& where) {
   std::istringstream words{std::string(line)};
   ReportConfig c;
@@ -15,6 +24,17 @@ ReportConfig parse_config(std::string_view line, const std::string& where) {
   c.label = c.method;
   for (const std::string& f : c.flags) c.label += " " + f;
   return c;
+}
+
+RenderOptions config_options(const ReportConfig& config, const RenderFlagsParser& parse,
+                             const std::function<void(RenderOptions&)>& run_settings) {
+  if (!method_known(config.method)) throw InputError("--method", "no method '" + config.method + "' in this build");
+  std::vector<std::string> flags = {"--method", config.method};
+  flags.insert(flags.end(), config.flags.begin(), config.flags.end());
+  RenderOptions options = parse(flags);
+  run_settings(options);
+  validate(options);
+  return options;
 }
 
 std::vector<ReportConfig> configs_to_measure(std::span<const std::string> chosen) {

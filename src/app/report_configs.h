@@ -1,10 +1,14 @@
 // The configurations `fastshade report` measures: ONE table, one line each, written as typed
 // after `fastshade render --method` (the method's name, then its flags).
 #pragma once
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "app/commands.h"
+#include "fastshade/render.h"
 
 namespace fastshade {
 
@@ -53,6 +57,13 @@ struct ReportConfig {
 
 // Splits a line at whitespace; throws InputError naming `where` if it is empty.
 ReportConfig parse_config(std::string_view line, const std::string& where);
+
+// The options `config` renders with: its flags read by `parse` exactly as `render` reads them
+// after `--method`, then `run_settings` (what every configuration of a run shares: threads,
+// ISA...), validated. Throws InputError saying why this build cannot run it: a method it does
+// not have, a flag it does not know, a value it refuses.
+RenderOptions config_options(const ReportConfig& config, const RenderFlagsParser& parse,
+                             const std::function<void(RenderOptions&)>& run_settings);
 
 // `chosen` (from --config) or else the whole table, with the reference and the baseline put
 // first whether listed or not, and repeats dropped.

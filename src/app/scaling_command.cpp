@@ -13,7 +13,6 @@
 
 #include <chrono>
 
-#include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include "app/commands.h"
@@ -169,10 +168,6 @@ int run_bench_scaling(const ScalingCommand& cmd) {
   const Scene scene = cmd.scene.empty() ? parse_scene(default_scene_json(), "<default scene>", ".")
                                         : load_scene(cmd.scene);
 
-  // TBB caps every arena at the hardware's threads unless told otherwise: the oversubscribed
-  // points must really run that many threads.
-  tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
-                            static_cast<std::size_t>(std::max(max_threads, hardware_threads)));
   const std::vector<int> threads = thread_counts(max_threads, hardware_threads);
   ScalingRun run;
   run.scene = cmd.scene.empty() ? "<default scene>" : fs::path(cmd.scene).filename().string();

@@ -15,6 +15,7 @@
 #include "app/report_metrics.h"
 #include "app/report_scenes.h"
 #include "app/timing_rounds.h"
+#include "app/tune_grid.h"
 #include "app/tune_output.h"
 #include "exec/isa.h"
 #include "fastshade/error.h"
@@ -31,81 +32,6 @@ namespace {
 constexpr int kMaxFrames = 1000;
 // --min-gain above this would keep the defaults against a candidate twice as fast: a typo.
 constexpr double kMaxGainPct = 100;
-// The default thresholds are these multiples of --max-error (8-bit steps): below the budget,
-// at it, and above it (which the bound classifier may still keep within the budget where a
-// scene's highlights are few; the table shows whether it did).
-constexpr double kThresholdsPerBudget[] = {0.5, 1.0, 2.0};
-
-struct Candidate {
-  std::string label;
-  RenderOptions options;
-};
-
-// validate()'s flag, and the tune flag that lists its values.
-constexpr std::pair<std::string_view, std::string_view> kListFlags[] = {
-    {"--method", "--methods"},       {"--tile", "--tiles"},
-    {"--spec-threshold", "--thresholds"}, {"--spec-method", "--spec-methods"},
-    {"--classifier", "--classifiers"}};
-
-void validate_candidate(const Candidate& c) {
-  try {
-    validate(c.options);
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    const std::size_t colon = message.find(": ");
-    for (const auto& [flag, list] : kListFlags)
-      if (message.compare(0, colon, flag) == 0)
-        throw InputError(std::string(list), message.substr(colon + 2) + " (in \"" + c.label + "\")");
-    throw;
-  }
-}
-
-std::string label_of(const RenderOptions& o) {
-  std::string label = o.method + " --tile " + std::to_string(o.tile_px);
-  if (o.method != "auto") return label;
-  label += " --spec-threshold " + format_double("%.4g", o.spec_threshold) + " --spec-method " + o.spec_method;
-  if (o.classifier != RenderOptions{}.classifier) label += " --classifier " + o.classifier;
-  return label;
-}
-
-// The grid, without repeats, then `render`'s defaults at this budget if the grid lacks them
-// (the "× default" column's yardstick); returns the default's index in `out`.
-std::size_t plan_candidates(const TuneCommand& cmd, std::vector<Candidate>& out) {
-  RenderOptions base;
-  base.threads = cmd.threads;
-  base.isa = cmd.isa;
-  base.max_error = cmd.max_error;
-  std::vector<double> thresholds = cmd.thresholds;
-  if (thresholds.empty())
-    for (double k : kThresholdsPerBudget) thresholds.push_back(k * cmd.max_error / 255.0);
-  const auto add = [&](const RenderOptions& o) {
-    const bool seen = std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.options == o; });
-    if (!seen) out.push_back({label_of(o), o});
-  };
-  for (const std::string& method : cmd.methods) {
-    for (int tile : cmd.tiles) {
-      RenderOptions o = base;
-      o.method = method;
-      o.tile_px = tile;
-      if (method != "auto") {
-        add(o);
-        continue;
-      }
-      for (double threshold : thresholds)
-        for (const std::string& spec_method : cmd.spec_methods)
-          for (const std::string& classifier : cmd.classifiers) {
-            o.spec_threshold = threshold;
-            o.spec_method = spec_method;
-            o.classifier = classifier;
-            add(o);
-          }
-    }
-  }
-  for (const Candidate& c : out) validate_candidate(c);
-  add(base);
-  return static_cast<std::size_t>(
-      std::find_if(out.begin(), out.end(), [&](const Candidate& c) { return c.options == base; }) - out.begin());
-}
 
 void check_config_output(const fs::path& path) {
   std::error_code ec;
@@ -148,8 +74,12 @@ std::vector<std::string_view> tuned_keys(const RenderOptions& o) {
 int run_tune(const TuneCommand& cmd) {
   check_usage(cmd);
   select_isa(cmd.isa);
+  RenderOptions defaults;
+  defaults.threads = cmd.threads;
+  defaults.isa = cmd.isa;
+  defaults.max_error = cmd.max_error;
   std::vector<Candidate> candidates;
-  const std::size_t default_candidate = plan_candidates(cmd, candidates);
+  const std::size_t default_candidate = plan_candidates(cmd, defaults, candidates);
 
   std::vector<fs::path> inputs(cmd.scenes.begin(), cmd.scenes.end());
   if (inputs.empty()) {

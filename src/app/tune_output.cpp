@@ -14,15 +14,6 @@ constexpr const char* kRule =
     "stays within the budget on every scene; render's defaults (at this budget) instead if they are "
     "within the budget and the fastest is no more than min_gain_pct faster (docs/TUNING.md)";
 
-std::string verdict_text(const TuneTable& t, std::size_t candidate) {
-  if (t.decision.chosen == candidate) return "chosen";
-  if (t.decision.fastest == candidate)
-    return "within budget, but only " + format_double("%.1f", t.decision.fastest_gain_pct) +
-           " % faster than the default (--min-gain " + format_double("%g", t.criteria.min_gain_pct) + " %)";
-  const std::string& why = t.decision.verdicts[candidate].rejected_because;
-  return why.empty() ? "within budget" : "over budget: " + why;
-}
-
 // "1 frame", "3 frames"
 std::string count(int n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
@@ -34,6 +25,15 @@ std::string table_row(const std::vector<std::string>& cells) {
 }
 
 }  // namespace
+
+std::string verdict_text(const TuneTable& t, std::size_t candidate) {
+  if (t.decision.chosen == candidate) return "chosen";
+  if (t.decision.fastest == candidate)
+    return "within budget, but only " + format_double("%.1f", t.decision.fastest_gain_pct) +
+           " % faster than the default (--min-gain " + format_double("%g", t.criteria.min_gain_pct) + " %)";
+  const std::string& why = t.decision.verdicts[candidate].rejected_because;
+  return why.empty() ? "within budget" : "over budget: " + why;
+}
 
 double speedup_vs_default(const TuneTable& t, std::size_t candidate) {
   return t.decision.verdicts[t.criteria.baseline].geomean_ms / t.decision.verdicts[candidate].geomean_ms;

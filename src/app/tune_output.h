@@ -22,6 +22,10 @@ struct TuneTable {
   TuneDecision decision;
 };
 
+// "chosen", "within budget", "within budget, but only 2.7 % faster than the default (--min-gain
+// 3 %)" or "over budget: " and why.
+std::string verdict_text(const TuneTable& table, std::size_t candidate);
+
 // The baseline's geometric-mean time over `candidate`'s (above 1: faster).
 double speedup_vs_default(const TuneTable& table, std::size_t candidate);
 

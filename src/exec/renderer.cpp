@@ -5,14 +5,13 @@
 #include <optional>
 #include <sstream>
 
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "exec/frame_profile.h"
 #include "exec/isa.h"
 #include "exec/left_out.h"
 #include "exec/tile_executor.h"
+#include "exec/worker_arena.h"
 #include "fastshade/error.h"
 #include "fastshade/render.h"
 #include "front/binning.h"
@@ -113,7 +112,7 @@ struct Renderer::Impl {
   TileDraw draw;
   bool classified = false;
   std::optional<Classifier> classifier;
-  tbb::task_arena arena;
+  WorkerArena arena;
   Frame frame;
   ProjectedVertices vertices;
   SetupParams setup;
@@ -125,7 +124,7 @@ struct Renderer::Impl {
         geometry(flatten_scene(scene)),
         method(find_method(o.method)),
         xf(view_transform(scene)),
-        arena(o.threads > 0 ? o.threads : tbb::info::default_concurrency()) {
+        arena(o.threads) {
     select_isa(o.isa);
     frame.grid = make_grid(scene.width, scene.height, o.tile_px);
     frame.shade = shade_constants(scene, xf, o.srgb, parse_brdf(o.brdf, "--brdf"));
@@ -149,7 +148,7 @@ struct Renderer::Impl {
     frame.chunks.resize(chunks);
     stats.triangles_in = static_cast<long long>(geometry.triangles.size());
     stats.tiles_total = frame.grid.tile_count();
-    stats.threads = arena.max_concurrency();
+    stats.threads = arena.threads();
     stats.tile = o.tile_px;
     stats.method = o.method;
     stats.isa = active_isa();
@@ -202,6 +201,7 @@ struct Renderer::Impl {
       if (profile) profile->stages = t;
       back_end = counts;
     });
+    stats.threads = arena.threads_available();
     stats.tiles_nonempty = back_end.tiles_nonempty;
     stats.covered_pixels = back_end.covered_pixels;
     stats.triangles_drawn = stats.triangles_dropped = stats.triangles_culled = 0;

@@ -19,20 +19,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/cli_run.h"
 #include "app/commands.h"
 #include "fastshade/error.h"
 #include "fastshade/image.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
 #include "io/scene_template.h"
+#include "support/cli_fixture.h"
 
 namespace fastshade {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using testing::Outcome;
+using test::Outcome;
 
 // Tiny meshes keep every run fast: an octahedron (OFF) and a tetrahedron (OBJ).
 constexpr const char* kOctahedron =
@@ -41,7 +41,7 @@ constexpr const char* kOctahedron =
 constexpr const char* kTetrahedron =
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
 
-class Batch : public testing::ProgramTest {
+class Batch : public test::CliFixture {
  protected:
   // `batch dir_/m -o dir_/out --views VIEWS --size SIZE`, for run_batch in process.
   BatchCommand command(int views, const std::string& size) const {

@@ -3,8 +3,6 @@
 // culprit. Timing decides nothing here (the rule is tested in tune_rule_test.cpp).
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include <nlohmann/json.hpp>
 
 #include "support/cli_fixture.h"
@@ -28,15 +26,6 @@ class TuneCli : public fastshade::test::CliFixture {
   void SetUp() override {
     CliFixture::SetUp();
     scene_ = write("tiny.json", kTinyScene).string();
-  }
-  // The largest channel error of `image` against the scene's reference, in whole 8-bit steps
-  // (compare's float path may add a few 1e-6 LSB).
-  double max_error_against_reference(const fs::path& image) {
-    const fs::path reference = dir_ / "reference.png";
-    EXPECT_EQ(run("render " + scene_ + " -o " + reference.string() + " --method reference").exit_code, 0);
-    const Outcome r = run("compare " + image.string() + " " + reference.string() + " --json");
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return std::round(json::parse(r.out)["max_abs_lsb"].get<double>());
   }
   std::string scene_;
 };
@@ -79,7 +68,7 @@ TEST_F(TuneCli, WritesAConfigWhoseChoiceRendersWithinTheBudget) {
   const fs::path image = dir_ / "tuned.png";
   const Outcome rendered = run("render " + scene_ + " --config " + config.string() + " -o " + image.string());
   ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
-  EXPECT_LE(max_error_against_reference(image), 1.0);
+  EXPECT_LE(max_error_against_reference(scene_, image), 1.0);
 }
 
 TEST_F(TuneCli, NoCandidateWithinTheBudgetWritesNothingAndExitsOne) {

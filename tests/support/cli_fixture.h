@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -13,12 +14,14 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace fastshade::test {
 
 namespace fs = std::filesystem;
 
 struct Outcome {
-  int exit_code;
+  int exit_code;  // -1 if the program did not exit normally (a signal)
   std::string out, err;
 };
 
@@ -29,7 +32,8 @@ inline std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-// Runs the program in a fresh directory per test, removed afterwards.
+// A test of the program with a fresh scratch directory of its own (removed afterwards), where
+// the program's output is captured and test files are written.
 class CliFixture : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -48,8 +52,10 @@ class CliFixture : public ::testing::Test {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "stdout.txt"),
             slurp(dir_ / "stderr.txt")};
   }
+  // Writes `text` to dir_/name, creating the directories on the way.
   fs::path write(const std::string& name, const std::string& text) {
     const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
     std::ofstream(p, std::ios::binary) << text;
     return p;
   }
@@ -69,6 +75,17 @@ class CliFixture : public ::testing::Test {
       if (n != "stdout.txt" && n != "stderr.txt") names.insert(n);
     }
     return names;
+  }
+  // The largest channel error of `image` against the reference render of `scene` (a scene file,
+  // then any flags such as --srgb), in whole 8-bit steps (compare's float path may add a few
+  // 1e-6 LSB), both measured by the program.
+  double max_error_against_reference(const std::string& scene, const fs::path& image) {
+    const fs::path reference = dir_ / "reference.png";
+    EXPECT_EQ(run("render " + scene + " -o " + reference.string() + " --method reference").exit_code, 0);
+    const Outcome r = run("compare " + image.string() + " " + reference.string() + " --json");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    fs::remove(reference);
+    return std::round(nlohmann::json::parse(r.out)["max_abs_lsb"].get<double>());
   }
   std::string scene_with(const std::string& objects, int width = 64) {
     return R"({"image": {"width": )" + std::to_string(width) +

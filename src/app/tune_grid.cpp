@@ -1,0 +1,87 @@
+#include "app/tune_grid.h"
+
+#include <algorithm>
+#include <string_view>
+#include <utility>
+
+#include "app/format.h"
+#include "fastshade/error.h"
+
+namespace fastshade {
+
+namespace {
+
+// The largest --spec-threshold: a specular term is a colour, at most 1, so a threshold of 1
+// already leaves every one out (validate() refuses more). Large budgets' thresholds stop here.
+constexpr double kMaxSpecThreshold = 1.0;
+
+// validate()'s flag, and the tune flag that lists its values.
+constexpr std::pair<std::string_view, std::string_view> kListFlags[] = {
+    {"--method", "--methods"},       {"--tile", "--tiles"},
+    {"--spec-threshold", "--thresholds"}, {"--spec-method", "--spec-methods"},
+    {"--classifier", "--classifiers"}};
+
+void validate_candidate(const Candidate& c) {
+  try {
+    validate(c.options);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    const std::size_t colon = message.find(": ");
+    for (const auto& [flag, list] : kListFlags)
+      if (message.compare(0, colon, flag) == 0)
+        throw InputError(std::string(list), message.substr(colon + 2) + " (in \"" + c.label + "\")");
+    throw;
+  }
+}
+
+// The tile is named when the candidates differ in it.
+std::string label_of(const RenderOptions& o, bool tiles_vary) {
+  std::string label = o.method + (tiles_vary ? " --tile " + std::to_string(o.tile_px) : "");
+  if (o.method != "auto") return label;
+  label += " --spec-threshold " + format_double("%.4g", o.spec_threshold) + " --spec-method " + o.spec_method;
+  if (o.classifier != RenderOptions{}.classifier) label += " --classifier " + o.classifier;
+  return label;
+}
+
+}  // namespace
+
+std::size_t plan_candidates(const TuneCommand& cmd, const RenderOptions& base, std::vector<Candidate>& out) {
+  std::vector<double> thresholds = cmd.thresholds;
+  if (thresholds.empty())
+    for (double k : kThresholdsPerBudget) thresholds.push_back(std::min(k * base.max_error / 255.0, kMaxSpecThreshold));
+  const std::size_t first = out.size();
+  const auto add = [&](const RenderOptions& o) {
+    const bool seen = std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.options == o; });
+    if (!seen) out.push_back({"", o});
+  };
+  for (const std::string& method : cmd.methods) {
+    for (int tile : cmd.tiles) {
+      RenderOptions o = base;
+      o.method = method;
+      o.tile_px = tile;
+      if (method != "auto") {
+        add(o);
+        continue;
+      }
+      for (double threshold : thresholds)
+        for (const std::string& spec_method : cmd.spec_methods)
+          for (const std::string& classifier : cmd.classifiers) {
+            o.spec_threshold = threshold;
+            o.spec_method = spec_method;
+            o.classifier = classifier;
+            add(o);
+          }
+    }
+  }
+  add(base);
+  const bool tiles_vary = std::any_of(out.begin() + first, out.end(),
+                                      [&](const Candidate& c) { return c.options.tile_px != base.tile_px; });
+  for (auto c = out.begin() + first; c != out.end(); ++c) {
+    c->label = label_of(c->options, tiles_vary);
+    validate_candidate(*c);
+  }
+  return static_cast<std::size_t>(
+      std::find_if(out.begin(), out.end(), [&](const Candidate& c) { return c.options == base; }) - out.begin());
+}
+
+}  // namespace fastshade
