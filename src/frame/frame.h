@@ -39,7 +39,9 @@ struct SetupTriangle {
   float depth[3];            // window depth in [0, 1]
   float inv_w[3];            // 1 / clip w, for perspective-correct attributes
   uint32_t attr[3];          // attribute index; kClippedAttr marks the chunk's own arrays
-  int16_t px_min[2], px_max[2];  // pixel-centre bounding box, inclusive, inside the image
+  // Pixel-centre bounding box, inclusive, inside the image; for a whole (unsplit) triangle
+  // px_min is also its planes' anchor (raster/planes.h barycentrics).
+  int16_t px_min[2], px_max[2];
   uint16_t material;
   uint16_t flags;            // kBackFacing
 };

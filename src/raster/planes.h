@@ -25,10 +25,16 @@ struct Barycentrics {
 FASTSHADE_FORCE_INLINE Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te) {
   Barycentrics b;
   // The anchor: the first pixel centre of the whole triangle's box (as triangle setup bounds
-  // it), so that the parts of a split triangle evaluate their parent's planes bit for bit.
-  const int32_t half = limits::kSubpixelOne / 2, round_up = limits::kSubpixelOne - 1;
-  b.ax = std::max((std::min({t.x_fx[0], t.x_fx[1], t.x_fx[2]}) - half + round_up) >> limits::kSubpixelBits, 0);
-  b.ay = std::max((std::min({t.y_fx[0], t.y_fx[1], t.y_fx[2]}) - half + round_up) >> limits::kSubpixelBits, 0);
+  // it, so a whole triangle's record holds it already), so that the parts of a split triangle
+  // evaluate their parent's planes bit for bit.
+  if (sierpinski_part(t) == 0) {
+    b.ax = t.px_min[0];
+    b.ay = t.px_min[1];
+  } else {
+    const int32_t half = limits::kSubpixelOne / 2, round_up = limits::kSubpixelOne - 1;
+    b.ax = std::max((std::min({t.x_fx[0], t.x_fx[1], t.x_fx[2]}) - half + round_up) >> limits::kSubpixelBits, 0);
+    b.ay = std::max((std::min({t.y_fx[0], t.y_fx[1], t.y_fx[2]}) - half + round_up) >> limits::kSubpixelBits, 0);
+  }
   const double inv_area = 1.0 / (4.0 * static_cast<double>(doubled_area(t)));  // edge units
   const int64_t x = pixel_centre_fx(b.ax), y = pixel_centre_fx(b.ay);
   for (int k = 0; k < 3; ++k) {

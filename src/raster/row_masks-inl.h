@@ -28,23 +28,25 @@ HWY_INLINE int RowMasks(const TriangleEdges& te, const PixelRect& rect, uint32_t
   const int lanes = static_cast<int>(hn::Lanes(d));
   const int columns = rect.x1 - rect.x0 + 1;
   const auto iota = hn::Iota(d, 0.0);
-  int64_t e_row[3], step_x[3], step_y[3];
+  // Rows and vectors are stepped in double too: every sum is an edge value, so exact.
+  double e_row[3], step_x[3], step_y[3];
   hn::Vec<decltype(d)> lane_step[3], threshold[3];
   for (int k = 0; k < 3; ++k) {
-    e_row[k] = te.e[k].at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0));
-    step_x[k] = te.e[k].a * kEdgeUnitsPerPixel;
-    step_y[k] = te.e[k].b * kEdgeUnitsPerPixel;
-    lane_step[k] = hn::Mul(iota, hn::Set(d, static_cast<double>(step_x[k])));
+    e_row[k] = static_cast<double>(te.e[k].at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0)));
+    step_x[k] = static_cast<double>(te.e[k].a * kEdgeUnitsPerPixel);
+    step_y[k] = static_cast<double>(te.e[k].b * kEdgeUnitsPerPixel);
+    lane_step[k] = hn::Mul(iota, hn::Set(d, step_x[k]));
     threshold[k] = hn::Set(d, static_cast<double>(te.e[k].threshold));
   }
   int covered = 0;
   for (int row = 0; row <= rect.y1 - rect.y0; ++row) {
     uint32_t row_bits = 0;
+    double e_first[3] = {e_row[0], e_row[1], e_row[2]};  // at the vector's first column
     for (int first = 0; first < columns; first += lanes) {
       auto in = hn::Lt(iota, hn::Set(d, static_cast<double>(columns - first)));
       for (int k = 0; k < 3; ++k) {
-        const auto e = hn::Add(hn::Set(d, static_cast<double>(e_row[k] + first * step_x[k])), lane_step[k]);
-        in = hn::And(in, hn::Ge(e, threshold[k]));
+        in = hn::And(in, hn::Ge(hn::Add(hn::Set(d, e_first[k]), lane_step[k]), threshold[k]));
+        e_first[k] += lanes * step_x[k];
       }
       uint8_t mask_bytes[8] = {};
       hn::StoreMaskBits(d, in, mask_bytes);

@@ -108,15 +108,17 @@ HWY_INLINE void set_up_phong_planes(const Frame& frame, uint32_t entry, const Se
                                     const Barycentrics& bary, PhongSpanInput& in) {
   const ShadeConstants& k = frame.shade;
   const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
-  auto plane_over_w = [&](AttrField field, int c, float scale) {
-    double q[3];
-    for (int i = 0; i < 3; ++i) q[i] = double(scale * frame.vertex(entry, t.attr[i], field)[c]) * t.inv_w[i];
-    return make_plane(bary, q[0], q[1], q[2]);
+  // Each vertex's attribute is fetched once (a fetch decodes the clipped-vertex tag), then
+  // split into one plane per component.
+  auto planes_over_w = [&](AttrField field, float scale, Plane* planes) {
+    glm::vec3 v[3];
+    for (int i = 0; i < 3; ++i) v[i] = frame.vertex(entry, t.attr[i], field);
+    for (int c = 0; c < 3; ++c)
+      planes[c] = make_plane(bary, double(scale * v[0][c]) * t.inv_w[0], double(scale * v[1][c]) * t.inv_w[1],
+                             double(scale * v[2][c]) * t.inv_w[2]);
   };
-  for (int c = 0; c < 3; ++c) {
-    in.n[c] = plane_over_w(&AttrArrays::n_view, c, flip);
-    if constexpr (kLocal) in.p[c] = plane_over_w(&AttrArrays::pos_view, c, 1.0f);
-  }
+  planes_over_w(&AttrArrays::n_view, flip, in.n);
+  if constexpr (kLocal) planes_over_w(&AttrArrays::pos_view, 1.0f, in.p);
   if constexpr (kLocal) in.inv_w = make_plane(bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
 }
 
