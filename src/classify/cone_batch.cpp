@@ -2,6 +2,8 @@
 #define HWY_TARGET_INCLUDE "classify/cone_batch.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
+#include <algorithm>
+
 #include <hwy/highway.h>
 
 #include "classify/cone_batch.h"
@@ -25,10 +27,16 @@ HWY_INLINE V ConeMaxDot(D d, V ca, V cos_half, V sin_half) {
   return hn::IfThenElse(hn::Ge(ca, cos_half), one, off);
 }
 
-// Classifier::classify up to its first exact bound, lane by lane; `settled` lanes take
-// Gouraud. Comments name the scalar steps (classify/classifier.cpp, highlight_bound.cpp).
 template <class D>
-HWY_INLINE auto DecideLanes(D d, const ConeBatchTerms& t, const NormalsSoA& soa, std::size_t i) {
+struct Decided {
+  hn::Mask<D> gouraud, specular;
+  hn::Vec<D> light;  // specular lanes: the first light a vertex term reaches the threshold for
+};
+
+// Classifier::classify up to its first exact bound, lane by lane. Comments name the scalar
+// steps (classify/classifier.cpp, highlight_bound.cpp).
+template <class D>
+HWY_INLINE Decided<D> DecideLanes(D d, const ConeBatchTerms& t, const NormalsSoA& soa, std::size_t i) {
   using V = hn::Vec<D>;
   V n[9];
   for (int k = 0; k < 9; ++k) n[k] = hn::LoadU(d, soa.n[k] + i);
@@ -44,13 +52,20 @@ HWY_INLINE auto DecideLanes(D d, const ConeBatchTerms& t, const NormalsSoA& soa,
   const V sin_half = hn::Sqrt(hn::Max(zero, hn::Sub(one, hn::Mul(cos_half, cos_half))));
   settled = hn::And(settled, hn::Gt(cos_half, zero));  // the cheap bounds need a narrow cone
   const double lights = static_cast<double>(t.lights.size());
-  // Vertex terms: a vertex alone reaching the threshold means a highlight.
-  for (const ConeLight& light : t.lights) {
+  // Vertex terms: a vertex alone reaching the threshold means a highlight (the first light
+  // in order that does is the one reported).
+  auto specular = hn::Lt(one, zero);  // none
+  V first_light = zero;
+  for (std::size_t k = 0; k < t.lights.size(); ++k) {
+    const ConeLight& light = t.lights[k];
     if (!(light.spec_weight > 0.0)) continue;
     const V h[3] = {hn::Set(d, light.h[0]), hn::Set(d, light.h[1]), hn::Set(d, light.h[2])};
     const V c_vertex = hn::Max(hn::Max(dot_n(0, h), dot_n(1, h)), dot_n(2, h));
-    settled = hn::And(settled, hn::Lt(c_vertex, hn::Set(d, light.cos_alone)));
+    const auto reaches = hn::AndNot(specular, hn::Ge(c_vertex, hn::Set(d, light.cos_alone)));
+    first_light = hn::IfThenElse(reaches, hn::Set(d, static_cast<double>(std::min<std::size_t>(k, 63))), first_light);
+    specular = hn::Or(specular, reaches);
   }
+  settled = hn::AndNot(specular, settled);
   // specular(cone): each light's term as a bound without pow; a term that may reach its share
   // of the threshold is the exact bounds' job.
   V spec = zero;
@@ -65,7 +80,7 @@ HWY_INLINE auto DecideLanes(D d, const ConeBatchTerms& t, const NormalsSoA& soa,
     spec = hn::Add(spec, hn::IfThenElseZero(hn::Gt(c_max, zero), term));
   }
   settled = hn::And(settled, hn::Lt(spec, hn::Set(d, t.spec_threshold)));
-  if (t.paper_rule) return settled;
+  if (t.paper_rule) return {settled, specular, first_light};
   // diffuse(cone): min |sum lambda n| >= cos_half; diffuse_error per light.
   V diffuse = zero;
   for (const ConeLight& light : t.lights) {
@@ -84,24 +99,30 @@ HWY_INLINE auto DecideLanes(D d, const ConeBatchTerms& t, const NormalsSoA& soa,
                                    hn::IfThenElse(hn::Ge(lo, zero), all_lit, hn::Max(hi, peak01)));
     diffuse = hn::Add(diffuse, hn::Mul(hn::Set(d, light.diffuse_weight), error));
   }
-  return hn::And(settled, hn::Le(hn::Add(diffuse, spec), hn::Set(d, t.gouraud_budget)));
+  return {hn::And(settled, hn::Le(hn::Add(diffuse, spec), hn::Set(d, t.gouraud_budget))), specular, first_light};
 }
 
-void DecideGouraudBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
-                        ShadePath* path) {
+void DecidePathsBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
+                      ShadePath* path, uint8_t* light) {
   const hn::ScalableTag<double> d;
   const std::size_t lanes = hn::Lanes(d);
+  constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
   std::size_t i = 0;
-  auto write = [&](const auto& settled, std::size_t n) {
-    uint8_t bits[8] = {};
-    hn::StoreMaskBits(d, settled, bits);
-    for (std::size_t k = 0; k < n; ++k)
-      path[i + k] = (bits[k / 8] >> (k % 8)) & 1 ? ShadePath::GouraudDiffuse : ShadePath::Unclassified;
+  auto write = [&](const auto& decided, std::size_t n) {
+    uint8_t gouraud[8] = {}, specular[8] = {};
+    hn::StoreMaskBits(d, decided.gouraud, gouraud);
+    hn::StoreMaskBits(d, decided.specular, specular);
+    alignas(64) double first_light[kMaxLanes];
+    hn::Store(decided.light, d, first_light);
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool is_specular = (specular[k / 8] >> (k % 8)) & 1, is_gouraud = (gouraud[k / 8] >> (k % 8)) & 1;
+      path[i + k] = is_specular ? ShadePath::Specular : is_gouraud ? ShadePath::GouraudDiffuse : ShadePath::Unclassified;
+      light[i + k] = static_cast<uint8_t>(first_light[k]);
+    }
   };
   for (; i + lanes <= count; i += lanes) write(DecideLanes(d, terms, normals, i), lanes);
   if (i == count) return;
   // The tail: copied into full vectors of a harmless triangle (all normals +z).
-  constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
   alignas(64) double tail[9][kMaxLanes];
   NormalsSoA tail_soa;
   for (int k = 0; k < 9; ++k) {
@@ -118,11 +139,11 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace fastshade {
 
-HWY_EXPORT(DecideGouraudBatch);
+HWY_EXPORT(DecidePathsBatch);
 
-void decide_gouraud_batch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
-                          ShadePath* path) {
-  HWY_DYNAMIC_DISPATCH(DecideGouraudBatch)(terms, normals, count, path);
+void decide_paths_batch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
+                        ShadePath* path, uint8_t* light) {
+  HWY_DYNAMIC_DISPATCH(DecidePathsBatch)(terms, normals, count, path, light);
 }
 
 }  // namespace fastshade

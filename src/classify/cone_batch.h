@@ -1,11 +1,12 @@
 // The classifier's first look (classify/classifier.h: vertex terms, then the normal cone's
-// bounds) for many triangles at once, one per SIMD lane: most triangles of a mesh go to
-// Gouraud on it, and in lanes it costs a few instructions a triangle instead of several
-// hundred. Lanes it cannot settle are left to Classifier::classify(), which is also the
-// scalar reference: a lane settled here gets exactly the path classify() would choose (the
-// same double operations in the same order, so the same bits).
+// bounds) for many triangles at once, one per SIMD lane: most triangles of a mesh are settled
+// by it, and in lanes it costs a few instructions a triangle instead of several hundred.
+// Lanes it cannot settle are left to Classifier::classify(), which is also the scalar
+// reference: a lane settled here gets exactly the path (and reported light) classify() would
+// choose (the same double operations in the same order, so the same bits).
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "frame/shade_path.h"
@@ -31,10 +32,12 @@ struct NormalsSoA {
   const double* n[9];
 };
 
-// path[i] = GouraudDiffuse where the cone bounds settle it as classify() would, Unclassified
-// where they cannot (highlight possible, bounds too loose, degenerate cone). Runs on the
-// process's ISA (exec/isa.h).
-void decide_gouraud_batch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
-                          ShadePath* path);
+// What the lanes settled, per triangle: path[i] is Specular where a vertex's own term reaches
+// the threshold (light[i]: the first such light, 63 standing for 63 and up, as classify()
+// reports it), GouraudDiffuse where the cone bounds settle it, Unclassified where they cannot
+// (highlight possible, bounds too loose, degenerate cone). Runs on the process's ISA
+// (exec/isa.h).
+void decide_paths_batch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
+                        ShadePath* path, uint8_t* light);
 
 }  // namespace fastshade

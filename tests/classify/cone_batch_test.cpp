@@ -1,7 +1,7 @@
 // The lanes' first look (classify/cone_batch.h) against its scalar reference, the whole
 // classifier: on every compiled ISA and batch length 0..2W+1 and beyond, a triangle settled in
-// lanes is one classify() sends to Gouraud too, and the lanes settle most of the triangles
-// that classify() decides on the cone alone.
+// lanes gets the path (and reported light) classify() gives it, and the lanes settle most of
+// the triangles that classify() sends to Gouraud.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,7 +48,7 @@ ShadeConstants scene(int lights, float shininess, float ks) {
   return k;
 }
 
-TEST(ConeBatch, SettlesOnlyWhatClassifySendsToGouraud) {
+TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
   std::mt19937 rng(5);
   const std::vector<glm::vec3> normals = random_triangles(rng, 4000);
   struct Setting {
@@ -74,7 +74,7 @@ TEST(ConeBatch, SettlesOnlyWhatClassifySendsToGouraud) {
       std::vector<std::size_t> lengths;
       for (std::size_t n = 0; n <= 17; ++n) lengths.push_back(n);
       lengths.push_back(normals.size() / 3);
-      int settled = 0, gouraud = 0;
+      int settled = 0, gouraud = 0, specular = 0;
       for (std::size_t count : lengths) {
         std::vector<double> soa(9 * count);
         NormalsSoA view;
@@ -82,19 +82,24 @@ TEST(ConeBatch, SettlesOnlyWhatClassifySendsToGouraud) {
         for (std::size_t t = 0; t < count; ++t)
           for (int v = 0; v < 3; ++v)
             for (int c = 0; c < 3; ++c) soa[(3 * v + c) * count + t] = normals[3 * t + v][c];
-        std::vector<ShadePath> path(count + 1, ShadePath::Specular);  // a sentinel past the end
-        decide_gouraud_batch(*terms, view, count, path.data());
-        ASSERT_EQ(path[count], ShadePath::Specular) << isa << ": wrote past the batch";
+        std::vector<ShadePath> path(count + 1, ShadePath::PixelDiffuse);  // a sentinel past the end
+        std::vector<uint8_t> light(count + 1, 99);
+        decide_paths_batch(*terms, view, count, path.data(), light.data());
+        ASSERT_EQ(path[count], ShadePath::PixelDiffuse) << isa << ": wrote past the batch";
+        ASSERT_EQ(light[count], 99) << isa << ": wrote past the batch";
         for (std::size_t t = 0; t < count; ++t) {
           ClassifyInput in;
           for (int v = 0; v < 3; ++v) in.n[v] = dvec3(normals[3 * t + v]);
-          const ShadePath expected = classifier.classify(in, 0).path;
-          ASSERT_TRUE(path[t] == ShadePath::Unclassified || path[t] == ShadePath::GouraudDiffuse) << isa;
-          if (path[t] == ShadePath::GouraudDiffuse)
-            ASSERT_EQ(expected, ShadePath::GouraudDiffuse) << isa << " triangle " << t << " of " << count;
+          const Classification expected = classifier.classify(in, 0);
+          ASSERT_NE(path[t], ShadePath::PixelDiffuse) << isa << ": the lanes never settle per-pixel diffuse";
+          if (path[t] != ShadePath::Unclassified)
+            ASSERT_EQ(expected.path, path[t]) << isa << " triangle " << t << " of " << count;
+          if (path[t] == ShadePath::Specular)
+            ASSERT_EQ(expected.lights_with_highlight, uint64_t(1) << light[t]) << isa << " triangle " << t;
           if (count == lengths.back()) {
             settled += path[t] == ShadePath::GouraudDiffuse;
-            gouraud += expected == ShadePath::GouraudDiffuse;
+            gouraud += expected.path == ShadePath::GouraudDiffuse;
+            specular += path[t] == ShadePath::Specular;
           }
         }
       }
@@ -102,6 +107,7 @@ TEST(ConeBatch, SettlesOnlyWhatClassifySendsToGouraud) {
       // cone alone, or the lanes would save nothing.
       EXPECT_GT(gouraud, 100) << isa << ": the cases must reach Gouraud to test anything";
       EXPECT_GE(settled, gouraud * 6 / 10) << isa << " settled " << settled << " of " << gouraud;
+      if (s.ks > 0.0f) EXPECT_GT(specular, 0) << isa << ": vertex highlights must be settled too";
     }
   }
   select_isa("best");
