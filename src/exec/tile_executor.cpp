@@ -125,23 +125,13 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
           rgba_rows_to_rgb(buffers.color.data(), stride,
                            image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                            image.width * 3, w, h);
-          long long tile_covered = 0;
-          long long tile_paths[kShadePathCount] = {};
-          for (int y = 0; y < h; ++y) {
-            const float* depth = buffers.depth.data() + y * stride;
-            const uint32_t* color = buffers.color.data() + y * stride;
-            for (int x = 0; x < w; ++x) {
-              const bool hit = depth[x] < 1.0f;
-              tile_covered += hit;
-              // Untagged pixels keep alpha 0xFF; path p's pixels carry p.
-              if (classified && hit && (color[x] >> 24) < kShadePathCount) ++tile_paths[color[x] >> 24];
-            }
-          }
+          const TilePixelCounts tile_counts =
+              count_tile_pixels(buffers.depth.data(), buffers.color.data(), stride, w, h, classified);
           nonempty.fetch_add(1, std::memory_order_relaxed);
-          covered.fetch_add(tile_covered, std::memory_order_relaxed);
+          covered.fetch_add(tile_counts.covered, std::memory_order_relaxed);
           if (classified)
             for (int p = 0; p < kShadePathCount; ++p)
-              path_pixels[p].fetch_add(tile_paths[p], std::memory_order_relaxed);
+              path_pixels[p].fetch_add(tile_counts.path[p], std::memory_order_relaxed);
         }
       },
       tbb::simple_partitioner());

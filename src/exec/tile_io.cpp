@@ -32,6 +32,29 @@ void RgbaRowsToRgb(const uint32_t* src, int src_stride_px, uint8_t* dst, int dst
   }
 }
 
+TilePixelCounts CountTilePixels(const float* depth, const uint32_t* color, int stride_px, int width,
+                                int rows, bool by_path) {
+  const hn::ScalableTag<float> d;
+  const hn::RebindToUnsigned<decltype(d)> du;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const auto cleared = hn::Set(d, 1.0f);
+  TilePixelCounts counts;
+  for (int y = 0; y < rows; ++y) {
+    const float* z = depth + std::ptrdiff_t(y) * stride_px;
+    const uint32_t* c = color + std::ptrdiff_t(y) * stride_px;
+    for (int x = 0; x < width; x += lanes) {
+      const auto hit = hn::And(hn::FirstN(d, static_cast<size_t>(width - x)), hn::Lt(hn::LoadU(d, z + x), cleared));
+      counts.covered += static_cast<long long>(hn::CountTrue(d, hit));
+      if (!by_path) continue;
+      const auto alpha = hn::ShiftRight<24>(hn::LoadU(du, c + x));
+      for (uint32_t p = 0; p < kShadePathCount; ++p)
+        counts.path[p] += static_cast<long long>(
+            hn::CountTrue(d, hn::And(hit, hn::RebindMask(d, hn::Eq(alpha, hn::Set(du, p))))));
+    }
+  }
+  return counts;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace fastshade
 HWY_AFTER_NAMESPACE();
@@ -40,6 +63,25 @@ HWY_AFTER_NAMESPACE();
 namespace fastshade {
 
 HWY_EXPORT(RgbaRowsToRgb);
+HWY_EXPORT(CountTilePixels);
+
+TilePixelCounts count_tile_pixels(const float* depth, const uint32_t* color, int stride_px, int width,
+                                  int rows, bool by_path) {
+  return HWY_DYNAMIC_DISPATCH(CountTilePixels)(depth, color, stride_px, width, rows, by_path);
+}
+
+TilePixelCounts count_tile_pixels_scalar(const float* depth, const uint32_t* color, int stride_px,
+                                         int width, int rows, bool by_path) {
+  TilePixelCounts counts;
+  for (int y = 0; y < rows; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::ptrdiff_t i = std::ptrdiff_t(y) * stride_px + x;
+      const bool hit = depth[i] < 1.0f;
+      counts.covered += hit;
+      if (by_path && hit && (color[i] >> 24) < kShadePathCount) ++counts.path[color[i] >> 24];
+    }
+  return counts;
+}
 
 void rgba_rows_to_rgb(const uint32_t* src, int src_stride_px, uint8_t* dst, int dst_stride_bytes,
                       int width, int rows) {
