@@ -7,6 +7,7 @@
 #define FASTSHADE_SHADE_SPAN_LOOP_INL_H_
 #endif
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -180,13 +181,30 @@ HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
   if (n > 0) flush(n);
 }
 
+// Whether no covered pixel can pass the depth test, decided before any plane is set up: the
+// depth plane is clamped to the vertex depths (raster/planes.h), so no pixel of the triangle is
+// nearer than its nearest vertex, and where every covered pixel already holds that depth or a
+// nearer one, the triangle draws nothing. Dense meshes drawn in mesh order hide many triangles
+// behind ones drawn before; the answer is exact, so images do not change.
+HWY_INLINE bool HiddenAlready(const TriangleInTile& tri, const TileTarget& tt, const uint32_t* row_bits) {
+  const SetupTriangle& t = *tri.tri;
+  const float nearest = std::min({t.depth[0], t.depth[1], t.depth[2]});
+  const PixelRect& r = tri.rect;
+  for (int py = r.y0; py <= r.y1; ++py) {
+    const float* depth = tt.depth + (py - tt.y_origin) * tt.stride + (r.x0 - tt.x_origin);
+    for (uint32_t bits = row_bits[py - r.y0]; bits; bits &= bits - 1)
+      if (depth[std::countr_zero(bits)] > nearest) return false;
+  }
+  return true;
+}
+
 // Narrow triangles: SIMD row masks, then the covered pixels in the narrowest vectors that hold
 // them (wide vectors mostly masked off cost double on CPUs that split 512-bit operations).
 template <typename ShadeFn>
 HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
   uint32_t row_bits[limits::kMaxTilePx];
   const int covered = RowMasks(tri.edges, tri.rect, row_bits);
-  if (covered == 0) return;
+  if (covered == 0 || HiddenAlready(tri, tt, row_bits)) return;
   const hn::ScalableTag<float> d;
   if (covered <= 4 && hn::Lanes(d) > 4) {
     ShadePackedWith(hn::CappedTag<float, 4>(), tri, tt, row_bits, shade);
