@@ -28,14 +28,21 @@ struct TriangleInTile {
   }
 };
 
-// False if the triangle's bounding box misses the tile rectangle.
-FASTSHADE_FORCE_INLINE bool prepare_triangle(const SetupTriangle& t, const PixelRect& tile, TriangleInTile& out) {
+// The triangle's box in this tile, without its edges (a kernel may find the triangle hidden
+// before it needs them: shade/span_loop-inl.h ShadeTriangle). False if the box misses the tile.
+FASTSHADE_FORCE_INLINE bool place_in_tile(const SetupTriangle& t, const PixelRect& tile, TriangleInTile& out) {
   out.rect = {std::max<int>(t.px_min[0], tile.x0), std::max<int>(t.px_min[1], tile.y0),
               std::min<int>(t.px_max[0], tile.x1), std::min<int>(t.px_max[1], tile.y1)};
   if (out.rect.x0 > out.rect.x1 || out.rect.y0 > out.rect.y1) return false;
   out.tri = &t;
-  out.edges = triangle_edges(t);
   out.has_planes = false;
+  return true;
+}
+
+// place_in_tile() and the coverage edges.
+FASTSHADE_FORCE_INLINE bool prepare_triangle(const SetupTriangle& t, const PixelRect& tile, TriangleInTile& out) {
+  if (!place_in_tile(t, tile, out)) return false;
+  out.edges = triangle_edges(t);
   return true;
 }
 

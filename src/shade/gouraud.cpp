@@ -28,7 +28,7 @@ HWY_INLINE auto GouraudShade(D d, const GouraudSpanInput& in, const LaneOffsets<
 template <bool kSrgb, bool kSpecular>
 void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   TriangleInTile tri;
-  if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
+  if (!place_in_tile(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
   const ShadeConstants& k = frame.shade;
   // Colour planes are set up on the first vector that passes the depth test (see phong.cpp).

@@ -139,7 +139,7 @@ template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
 void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   if (kSpecular && ShadesInDouble(frame, entry)) return draw_reference(frame, entry, tt);
   TriangleInTile tri;
-  if (!prepare_triangle(frame.triangle(entry), tt.rect, tri)) return;
+  if (!place_in_tile(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
   const ShadeConstants& k = frame.shade;
   // Shading planes are set up on the first vector that passes the depth test: in a dense

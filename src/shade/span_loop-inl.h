@@ -186,17 +186,24 @@ HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
 // nearer than its nearest vertex, and where every covered pixel already holds that depth or a
 // nearer one, the triangle draws nothing. Dense meshes drawn in mesh order hide many triangles
 // behind ones drawn before; the answer is exact, so images do not change.
+// row_bits: the covered pixels; nullptr tests the whole box, which a small triangle can do
+// before its edges are even set up.
 HWY_INLINE bool HiddenAlready(const TriangleInTile& tri, const TileTarget& tt, const uint32_t* row_bits) {
   const SetupTriangle& t = *tri.tri;
   const float nearest = std::min({t.depth[0], t.depth[1], t.depth[2]});
   const PixelRect& r = tri.rect;
+  const uint32_t whole_row = (uint32_t(2) << (r.x1 - r.x0)) - 1;  // rect narrower than 32
   for (int py = r.y0; py <= r.y1; ++py) {
     const float* depth = tt.depth + (py - tt.y_origin) * tt.stride + (r.x0 - tt.x_origin);
-    for (uint32_t bits = row_bits[py - r.y0]; bits; bits &= bits - 1)
+    for (uint32_t bits = row_bits ? row_bits[py - r.y0] : whole_row; bits; bits &= bits - 1)
       if (depth[std::countr_zero(bits)] > nearest) return false;
   }
   return true;
 }
+
+// Boxes up to this many pixels are tested whole before coverage: a dense mesh's triangles are
+// boxes of 1-9 pixels, and the test stops at the first pixel that could still change.
+inline constexpr int kHiddenBoxTestPx = 16;
 
 // Narrow triangles: SIMD row masks, then the covered pixels in the narrowest vectors that hold
 // them (wide vectors mostly masked off cost double on CPUs that split 512-bit operations).
@@ -215,14 +222,18 @@ HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&&
   }
 }
 
-// Every covered pixel of the triangle in this tile: packed lanes for narrow triangles, row
-// spans otherwise.
+// Every covered pixel of the triangle in this tile (placed by place_in_tile: its edges are set
+// up here): packed lanes for narrow triangles, row spans otherwise.
 template <typename ShadeFn>
 HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
-  if (tri.rect.x1 - tri.rect.x0 < kNarrowRectPx) {
+  const PixelRect& r = tri.rect;
+  if (r.x1 - r.x0 < kNarrowRectPx) {
+    if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt, nullptr)) return;
+    tri.edges = triangle_edges(*tri.tri);
     ShadePacked(tri, tt, shade);
     return;
   }
+  tri.edges = triangle_edges(*tri.tri);
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
     tri.set_up_planes();
     ShadeSpan(tri.bary, tri.depth, py, x0, x1, tile_row(tt, py), shade);
