@@ -14,6 +14,8 @@ namespace {
 
 using namespace fastshade;
 
+constexpr int kSpan = 64, kY = 40, kX0 = 40;
+
 struct Setup {
   SetupTriangle tri{};
   Barycentrics bary;
@@ -49,13 +51,14 @@ struct Setup {
     phong.material = &material;
     phong.shade = &shade;
   }
+  // Only the span's own depths are reset between calls (4 vector stores at 16 lanes), so every
+  // pixel passes the depth test and is shaded; resetting the whole 512-float row cost more
+  // than the kernel itself.
   RowTarget row() {
-    std::fill(depth.begin(), depth.end(), 1.0f);
+    std::fill(depth.begin() + kX0, depth.begin() + kX0 + kSpan, 1.0f);
     return {depth.data(), color.data()};
   }
 };
-
-constexpr int kSpan = 64, kY = 40, kX0 = 40;
 
 template <typename Kernel>
 void run(benchmark::State& state, const std::string& isa, Kernel kernel, const std::string& brdf = "exact") {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <optional>
 
 #include <hwy/highway.h>
 
@@ -22,95 +23,117 @@ namespace HWY_NAMESPACE {
 // tile decides alike) take per-pixel Phong: a segment end costs as much as a pixel.
 inline constexpr int kHybridMinWidthPx = 8;
 
+// The rows of one triangle in one tile, with their segment ends shaded together: a row of a
+// small triangle has only a few ends, which alone would fill a fraction of a vector (on a
+// 16-lane target one vector of ends costs as much as Phong at every pixel of a short row).
+// Rows are collected until the buffer is full; then Phong runs over all their ends in full
+// vectors, each segment gets its slope, and every row is interpolated.
+//
+// A pixel x of a row whose whole run in the triangle is [xl, xr] lies in the segment from
+// ea = clamp(g, xl, xr) to eb = clamp(g + step, xl, xr), g = x rounded down to a multiple of
+// step, and takes ca + slope (x - ea) with slope = (cb - ca) / (eb - ea) (0 if eb = ea):
+// exactly what hybrid_span_scalar() computes.
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+class HybridRows {
+ public:
+  HybridRows(const PhongSpanInput& in, int step) : in_(in), step_(step), shift_(std::countr_zero(unsigned(step))) {}
+
+  void add(int py, int xl, int xr, int x0, int x1, RowTarget target) {
+    if (step_ == 1) {  // per-pixel Phong
+      ShadeSpan(in_.bary, in_.depth, py, x0, x1, target,
+                [&](auto d, const auto& o) { return PhongShade<kLocal, kSrgb, kBrdf>(d, in_, o); });
+      return;
+    }
+    const int g0 = x0 & ~(step_ - 1), g_last = (x1 & ~(step_ - 1)) + step_;
+    const int count = (g_last - g0) / step_ + 1;
+    if (ends_ + count > kMaxEnds || rows_ == kMaxRows) flush();
+    rows_at_[rows_++] = {py, xl, xr, x0, x1, ends_, target};
+    for (int g = g0; g <= g_last; g += step_, ++ends_) {
+      end_x_[ends_] = std::clamp(g, xl, xr);
+      end_dy_[ends_] = py - in_.bary.ay;
+    }
+  }
+
+  void flush() {
+    if (rows_ == 0) return;
+    const hn::ScalableTag<float> d;
+    const hn::RebindToSigned<decltype(d)> di;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    for (int j = ends_; j < ends_ + lanes; ++j)  // padding: the last end repeated
+      end_x_[j] = end_x_[ends_ - 1], end_dy_[j] = end_dy_[ends_ - 1];
+    for (int j = 0; j < ends_; j += lanes) {
+      const auto o = MakeLaneOffsets(d, in_.bary, hn::Load(di, end_x_ + j), hn::ConvertTo(d, hn::Load(di, end_dy_ + j)));
+      const auto c = PhongColor<kLocal, kBrdf>(d, in_, o);
+      hn::Store(c.r, d, end_c_[0] + j);
+      hn::Store(c.g, d, end_c_[1] + j);
+      hn::Store(c.b, d, end_c_[2] + j);
+    }
+    // Slopes from each end to the next; from a row's last end, and past the last end, the
+    // pairs are not segments and their slopes are never picked.
+    for (int j = 0; j < ends_; j += lanes) {
+      const auto len = hn::ConvertTo(d, hn::Sub(hn::LoadU(di, end_x_ + j + 1), hn::Load(di, end_x_ + j)));
+      const auto has_len = hn::Gt(len, hn::Zero(d));
+      const auto safe_len = hn::Max(len, hn::Set(d, 1.0f));
+      for (int c = 0; c < 3; ++c)
+        hn::Store(hn::IfThenElseZero(has_len, hn::Div(hn::Sub(hn::LoadU(d, end_c_[c] + j + 1), hn::Load(d, end_c_[c] + j)), safe_len)),
+                  d, slope_[c] + j);
+    }
+    for (int r = 0; r < rows_; ++r) interpolate(rows_at_[r]);
+    rows_ = ends_ = 0;
+  }
+
+ private:
+  struct Row {
+    int py, xl, xr, x0, x1, first_end;
+    RowTarget target;
+  };
+
+  // A vector of `lanes` pixels meets at most lanes / step + 1 segments (step >= 2), which fit
+  // in one vector: lanes pick their segment's values by permuting the vectors of ends and
+  // slopes loaded at the vector's first segment. Lanes past x1 (masked off) take x1's, so
+  // every pick is one of the row's segments.
+  void interpolate(const Row& row) {
+    ShadeSpan(in_.bary, in_.depth, row.py, row.x0, row.x1, row.target, [&](auto d, const auto& o) {
+      const hn::RebindToSigned<decltype(d)> di;
+      const auto xi = hn::Min(hn::Add(hn::ConvertTo(di, hn::Add(o.block_dx, o.k)), hn::Set(di, in_.bary.ax)),
+                              hn::Set(di, row.x1));
+      const auto seg = hn::ShiftRightSame(xi, shift_);
+      const int first_seg = hn::GetLane(seg);
+      const int at = row.first_end + first_seg - (row.x0 >> shift_);
+      const auto pick = hn::IndicesFromVec(d, hn::Sub(seg, hn::Set(di, first_seg)));
+      const auto ea = hn::Min(hn::Max(hn::ShiftLeftSame(seg, shift_), hn::Set(di, row.xl)), hn::Set(di, row.xr));
+      const auto dx = hn::ConvertTo(d, hn::Sub(xi, ea));
+      auto channel = [&](int c) {
+        const auto ca = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at), pick);
+        return hn::Add(ca, hn::Mul(hn::TableLookupLanes(hn::LoadU(d, slope_[c] + at), pick), dx));
+      };
+      return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
+    });
+  }
+
+  static constexpr int kMaxEnds = 256;
+  static constexpr int kMaxRows = kMaxEnds / 2;  // a row has at least two ends
+  static constexpr int kPad = 2 * HWY_MAX_BYTES / sizeof(float);  // keeps every array 64-byte aligned
+  const PhongSpanInput in_;  // a copy: the caller's planes may live in a frame that ends first
+  const int step_, shift_;
+  int rows_ = 0, ends_ = 0;
+  Row rows_at_[kMaxRows];
+  alignas(64) int32_t end_x_[kMaxEnds + kPad], end_dy_[kMaxEnds + kPad];
+  alignas(64) float end_c_[3][kMaxEnds + kPad], slope_[3][kMaxEnds + kPad];
+};
+
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,
                     RowTarget row) {
-  const hn::ScalableTag<float> d;
-  const hn::RebindToSigned<decltype(d)> di;
-  const int lanes = static_cast<int>(hn::Lanes(d));
-  constexpr int kBlock = limits::kSeedBlockPx;
-  constexpr int kMaxBlocks = limits::kMaxTilePx / kBlock + 1;
-  constexpr int kMaxEnds = kMaxBlocks * (kBlock + 1) + HWY_MAX_BYTES / sizeof(float);
-  const auto iota = hn::Iota(di, 0);
-  const auto dy = hn::Set(d, static_cast<float>(py - in.bary.ay));
-  // 1. Per block its segment length, and every segment end of the span in one list, so that
-  //    the ends of many blocks share vectors: a block with 2 ends must not cost a vector.
-  alignas(64) int32_t end_x[kMaxEnds];
-  alignas(64) float end_r[kMaxEnds], end_g[kMaxEnds], end_b[kMaxEnds];
-  int block_step[kMaxBlocks], block_first_end[kMaxBlocks];
-  const int xb0 = x0 & ~(kBlock - 1);
-  int ends = 0, blocks = 0;
-  for (int xb = xb0; xb <= x1; xb += kBlock, ++blocks) {
-    const int step = run.step;
-    block_step[blocks] = step;
-    block_first_end[blocks] = ends;
-    if (step > 1)
-      for (int j = 0; j * step <= kBlock; ++j) end_x[ends++] = segment_end(xb, j, step, run.xl, run.xr);
-  }
-  // 2. Phong at all the ends, a full vector at a time (the padding repeats the last end).
-  for (int j = ends; j % lanes != 0; ++j) end_x[j] = ends > 0 ? end_x[ends - 1] : run.xl;
-  for (int j = 0; j < ends; j += lanes) {
-    const auto c = PhongColor<kLocal, kBrdf>(d, in, MakeLaneOffsets(d, in.bary, hn::Load(di, end_x + j), dy));
-    hn::Store(c.r, d, end_r + j);
-    hn::Store(c.g, d, end_g + j);
-    hn::Store(c.b, d, end_b + j);
-  }
-  // 3. Pixels: per-pixel Phong where a block needs it, the segments' lines elsewhere.
-  auto phong = [&](auto dd, const auto& o) { return PhongShade<kLocal, kSrgb, kBrdf>(dd, in, o); };
-  for (int k = 0; k < blocks; ++k) {
-    const int xb = xb0 + k * kBlock;
-    const int lo = std::max(xb, x0), hi = std::min(xb + kBlock - 1, x1);
-    const int step = block_step[k];
-    if (step == 1) {
-      ShadeSpanWith(d, in.bary, in.depth, py, lo, hi, row, phong);
-      continue;
-    }
-    const int shift = std::countr_zero(static_cast<unsigned>(step));
-    ShadeSpanAt(d, in.bary, in.depth, py, lo, hi, row, [&](auto, const auto&, int x) {
-      const auto xi = hn::Add(hn::Set(di, x), iota);
-      // Lanes past hi are clamped into the block: their ends stay inside the arrays.
-      const auto i = hn::Min(hn::Sub(xi, hn::Set(di, xb)), hn::Set(di, kBlock - 1));
-      const auto j0 = hn::ShiftRightSame(i, shift);
-      const auto j1 = hn::Add(j0, hn::Set(di, 1));
-      const int first_end = block_first_end[k];
-      // The block's ends (at most 16 / step + 1) as vectors: lanes pick theirs by permuting
-      // when they fit in one vector, by gathering otherwise (narrow vectors, short steps).
-      const bool fits = kBlock / step + 1 <= lanes;
-      auto pick = [&](const auto& v_or_ptr, const auto& j) {
-        if constexpr (std::is_pointer_v<std::decay_t<decltype(v_or_ptr)>>) {
-          return hn::GatherIndex(hn::Rebind<std::remove_const_t<std::remove_pointer_t<std::decay_t<decltype(v_or_ptr)>>>, decltype(d)>(),
-                                 v_or_ptr, hn::Add(j, hn::Set(di, first_end)));
-        } else {
-          return hn::TableLookupLanes(v_or_ptr, hn::IndicesFromVec(hn::Rebind<hn::TFromV<std::decay_t<decltype(v_or_ptr)>>, decltype(d)>(), j));
-        }
-      };
-      hn::Vec<decltype(di)> ea, eb;
-      hn::Vec<decltype(d)> ra, rb, ga, gb, ba, bb;
-      if (fits) {
-        const auto vx = hn::LoadU(di, end_x + first_end);
-        const auto vr = hn::LoadU(d, end_r + first_end), vg = hn::LoadU(d, end_g + first_end),
-                   vb = hn::LoadU(d, end_b + first_end);
-        ea = pick(vx, j0), eb = pick(vx, j1);
-        ra = pick(vr, j0), rb = pick(vr, j1), ga = pick(vg, j0), gb = pick(vg, j1), ba = pick(vb, j0), bb = pick(vb, j1);
-      } else {
-        ea = pick(static_cast<const int32_t*>(end_x), j0), eb = pick(static_cast<const int32_t*>(end_x), j1);
-        ra = pick(static_cast<const float*>(end_r), j0), rb = pick(static_cast<const float*>(end_r), j1);
-        ga = pick(static_cast<const float*>(end_g), j0), gb = pick(static_cast<const float*>(end_g), j1);
-        ba = pick(static_cast<const float*>(end_b), j0), bb = pick(static_cast<const float*>(end_b), j1);
-      }
-      const auto len = hn::ConvertTo(d, hn::Sub(eb, ea));
-      const auto t = hn::IfThenElseZero(hn::Gt(len, hn::Zero(d)),
-                                        hn::Div(hn::ConvertTo(d, hn::Sub(xi, ea)), hn::Max(len, hn::Set(d, 1.0f))));
-      auto lerp = [&](const auto& a, const auto& b) { return hn::Add(a, hn::Mul(t, hn::Sub(b, a))); };
-      return PackRGBA<kSrgb>(d, lerp(ra, rb), lerp(ga, gb), lerp(ba, bb));
-    });
-  }
+  HybridRows<kLocal, kSrgb, kBrdf> rows(in, run.step);
+  rows.add(py, run.xl, run.xr, x0, x1, row);
+  rows.flush();
 }
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadeConstants& k = frame.shade;
-  int step = 1;
+  std::optional<HybridRows<kLocal, kSrgb, kBrdf>> rows;
   DrawByRowRuns<kLocal, kSrgb, kBrdf>(
       frame, entry, tt, kHybridMinWidthPx,
       [&](const PhongSpanInput& in) {
@@ -123,11 +146,12 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
           normals.pos_view[i] =
               kLocal ? frame.vertex(entry, t.attr[i], &AttrArrays::pos_view) : glm::vec3(0.0f);
         }
-        step = hybrid_triangle_step(in, normals, k.hybrid_tolerance);
+        rows.emplace(in, hybrid_triangle_step(in, normals, k.hybrid_tolerance));
       },
-      [&](const PhongSpanInput& in, int xl, int xr, int py, int x0, int x1, RowTarget row) {
-        HybridSpanImpl<kLocal, kSrgb, kBrdf>(in, {step, xl, xr}, py, x0, x1, row);
+      [&](const PhongSpanInput&, int xl, int xr, int py, int x0, int x1, RowTarget row) {
+        rows->add(py, xl, xr, x0, x1, row);
       });
+  if (rows) rows->flush();
 }
 
 using HybridSpanFn = void (*)(const PhongSpanInput&, const HybridRun&, int, int, int, RowTarget);

@@ -1,6 +1,6 @@
-// Hybrid Gouraud/Phong segments (the paper, section II; NOTES.md section 6): inside each
-// 16-pixel seed block, Phong at segment ends 2^m pixels apart and linear in between, with m
-// chosen per block so that linear interpolation stays within the error budget.
+// Hybrid Gouraud/Phong segments (the paper, section II; NOTES.md section 6): along a row,
+// Phong at segment ends 2^m pixels apart and linear in between, with m chosen per triangle so
+// that linear interpolation stays within the error budget.
 #pragma once
 #include <algorithm>
 
@@ -10,12 +10,9 @@
 
 namespace fastshade {
 
-// Segment ends never leave the triangle: on a row whose whole covered run (in the triangle,
-// not just this tile) is [xl, xr], the ends xb + j step are clamped to [xl, xr], so Phong is
-// only ever evaluated inside, and a pixel's value does not depend on the tiles.
-inline int segment_end(int xb, int j, int step, int xl, int xr) {
-  return std::clamp(xb + j * step, xl, xr);
-}
+// The segment ends lie on the multiples of the step, clamped to the row's whole covered run
+// [xl, xr] in the triangle (not just this tile): Phong is only ever evaluated inside, and a
+// pixel's value does not depend on the tiles.
 
 // What the step decision needs of a triangle beyond its planes: unit vertex normals (view
 // space, flipped for two-sided back faces), 1/w at the vertices and, for a local viewer, their

@@ -50,9 +50,9 @@ HWY_INLINE V EvalPlane(D d, const Plane& p, const LaneOffsets<D>& o) {
 }
 
 // clamp to [0, 1] (NaN becomes 0: x86 max returns its second operand), optional sRGB curve,
-// floor(255 v + 0.5), as quantize() in shade/lighting.h.
+// floor(255 v + 0.5), as quantize() in shade/lighting.h; the level stays a float (exact).
 template <bool kSrgb, class D, class V = hn::Vec<D>>
-HWY_INLINE auto Quantize(D d, V v) {
+HWY_INLINE V QuantizeLevel(D d, V v) {
   v = hn::Min(hn::Max(v, hn::Zero(d)), hn::Set(d, 1.0f));
   if constexpr (kSrgb) {
     const V linear = hn::Mul(v, hn::Set(d, 12.92f));
@@ -62,16 +62,18 @@ HWY_INLINE auto Quantize(D d, V v) {
         hn::Set(d, 0.055f));
     v = hn::IfThenElse(hn::Le(v, hn::Set(d, 0.0031308f)), linear, curve);
   }
-  const V scaled = hn::Floor(hn::Add(hn::Mul(v, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
-  return hn::BitCast(hn::RebindToUnsigned<D>(), hn::ConvertTo(hn::RebindToSigned<D>(), scaled));
+  return hn::Floor(hn::Add(hn::Mul(v, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
 }
 
+// The three levels (integers 0..255 held exactly in floats) meet in one float, r + 256 g +
+// 65536 b < 2^24, also exact, so the pixel needs one conversion to integer instead of three
+// (each conversion carries Highway's overflow fix-up) and no shifts.
 template <bool kSrgb, class D, class V = hn::Vec<D>>
 HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
   const hn::RebindToUnsigned<D> du;
-  const auto ri = Quantize<kSrgb>(d, r), gi = Quantize<kSrgb>(d, g), bi = Quantize<kSrgb>(d, b);
-  return hn::Or(hn::Or(ri, hn::ShiftLeft<8>(gi)),
-                hn::Or(hn::ShiftLeft<16>(bi), hn::Set(du, 0xFF000000u)));
+  const V rgb = hn::Add(hn::Add(QuantizeLevel<kSrgb>(d, r), hn::Mul(QuantizeLevel<kSrgb>(d, g), hn::Set(d, 256.0f))),
+                        hn::Mul(QuantizeLevel<kSrgb>(d, b), hn::Set(d, 65536.0f)));
+  return hn::Or(hn::BitCast(du, hn::ConvertTo(hn::RebindToSigned<D>(), rgb)), hn::Set(du, 0xFF000000u));
 }
 
 // Walks one covered row span a vector at a time: depth test against the tile, then

@@ -97,29 +97,25 @@ void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarg
 void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,
                         RowTarget row) {
   const bool srgb = in.shade->srgb;
-  const int block = limits::kSeedBlockPx;
-  for (int xb = x0 & ~(block - 1); xb <= x1; xb += block) {
-    const int step = run.step;
-    PhongColor ends[limits::kSeedBlockPx + 1];
-    if (step > 1)
-      for (int j = 0; j * step <= block; ++j)
-        ends[j] = phong_color_scalar(in, pixel_offsets(in.bary, segment_end(xb, j, step, run.xl, run.xr), py));
-    for (int px = std::max(xb, x0); px <= std::min(xb + block - 1, x1); ++px) {
-      const PixelOffsets o = pixel_offsets(in.bary, px, py);
-      if (!depth_pass(in.depth, o, row.depth[px])) continue;
-      PhongColor rgb;
-      if (step == 1) {
-        rgb = phong_color_scalar(in, o);
-      } else {
-        const int j = (px - xb) / step;
-        const int ea = segment_end(xb, j, step, run.xl, run.xr), eb = segment_end(xb, j + 1, step, run.xl, run.xr);
-        const float t = eb > ea ? static_cast<float>(px - ea) / static_cast<float>(eb - ea) : 0.0f;
-        for (int ch = 0; ch < 3; ++ch)
-          rgb.c[ch] = ends[j].c[ch] + t * (ends[j + 1].c[ch] - ends[j].c[ch]);
+  const int step = run.step;
+  for (int px = x0; px <= x1; ++px) {
+    const PixelOffsets o = pixel_offsets(in.bary, px, py);
+    if (!depth_pass(in.depth, o, row.depth[px])) continue;
+    PhongColor rgb;
+    if (step == 1) {
+      rgb = phong_color_scalar(in, o);
+    } else {
+      const int g = px & ~(step - 1);
+      const int ea = std::clamp(g, run.xl, run.xr), eb = std::clamp(g + step, run.xl, run.xr);
+      const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py));
+      const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py));
+      for (int ch = 0; ch < 3; ++ch) {
+        const float slope = eb > ea ? (cb.c[ch] - ca.c[ch]) / static_cast<float>(eb - ea) : 0.0f;
+        rgb.c[ch] = ca.c[ch] + slope * static_cast<float>(px - ea);
       }
-      row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
-                                quantize_like_simd(rgb.c[2], srgb));
     }
+    row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
+                              quantize_like_simd(rgb.c[2], srgb));
   }
 }
 
