@@ -27,12 +27,12 @@ inline constexpr int kHybridMinWidthPx = 8;
 // small triangle has only a few ends, which alone would fill a fraction of a vector (on a
 // 16-lane target one vector of ends costs as much as Phong at every pixel of a short row).
 // Rows are collected until the buffer is full; then Phong runs over all their ends in full
-// vectors, each segment gets its slope, and every row is interpolated.
+// vectors and every row is interpolated.
 //
 // A pixel x of a row whose whole run in the triangle is [xl, xr] lies in the segment from
 // ea = clamp(g, xl, xr) to eb = clamp(g + step, xl, xr), g = x rounded down to a multiple of
-// step, and takes ca + slope (x - ea) with slope = (cb - ca) / (eb - ea) (0 if eb = ea):
-// exactly what hybrid_span_scalar() computes.
+// step, and takes ca + t (cb - ca) with t = (x - ea) / (eb - ea) (0 if eb = ea): exactly what
+// hybrid_span_scalar() computes.
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 class HybridRows {
  public:
@@ -68,16 +68,6 @@ class HybridRows {
       hn::Store(c.g, d, end_c_[1] + j);
       hn::Store(c.b, d, end_c_[2] + j);
     }
-    // Slopes from each end to the next; from a row's last end, and past the last end, the
-    // pairs are not segments and their slopes are never picked.
-    for (int j = 0; j < ends_; j += lanes) {
-      const auto len = hn::ConvertTo(d, hn::Sub(hn::LoadU(di, end_x_ + j + 1), hn::Load(di, end_x_ + j)));
-      const auto has_len = hn::Gt(len, hn::Zero(d));
-      const auto safe_len = hn::Max(len, hn::Set(d, 1.0f));
-      for (int c = 0; c < 3; ++c)
-        hn::Store(hn::IfThenElseZero(has_len, hn::Div(hn::Sub(hn::LoadU(d, end_c_[c] + j + 1), hn::Load(d, end_c_[c] + j)), safe_len)),
-                  d, slope_[c] + j);
-    }
     for (int r = 0; r < rows_; ++r) interpolate(rows_at_[r]);
     rows_ = ends_ = 0;
   }
@@ -88,10 +78,10 @@ class HybridRows {
     RowTarget target;
   };
 
-  // A vector of `lanes` pixels meets at most lanes / step + 1 segments (step >= 2), which fit
-  // in one vector: lanes pick their segment's values by permuting the vectors of ends and
-  // slopes loaded at the vector's first segment. Lanes past x1 (masked off) take x1's, so
-  // every pick is one of the row's segments.
+  // A vector of `lanes` pixels meets at most lanes / step + 1 segments (step >= 2), whose
+  // ends fit in one vector: lanes pick their segment's ends by permuting the vectors of end
+  // colours loaded at the vector's first segment (and one further, for eb). Lanes past x1
+  // (masked off) take x1's, so every pick is one of the row's segments.
   void interpolate(const Row& row) {
     ShadeSpan(in_.bary, in_.depth, row.py, row.x0, row.x1, row.target, [&](auto d, const auto& o) {
       const hn::RebindToSigned<decltype(d)> di;
@@ -101,11 +91,16 @@ class HybridRows {
       const int first_seg = hn::GetLane(seg);
       const int at = row.first_end + first_seg - (row.x0 >> shift_);
       const auto pick = hn::IndicesFromVec(d, hn::Sub(seg, hn::Set(di, first_seg)));
-      const auto ea = hn::Min(hn::Max(hn::ShiftLeftSame(seg, shift_), hn::Set(di, row.xl)), hn::Set(di, row.xr));
-      const auto dx = hn::ConvertTo(d, hn::Sub(xi, ea));
+      const auto g = hn::ShiftLeftSame(seg, shift_);
+      const auto xl = hn::Set(di, row.xl), xr = hn::Set(di, row.xr);
+      const auto ea = hn::Min(hn::Max(g, xl), xr);
+      const auto len = hn::ConvertTo(d, hn::Sub(hn::Min(hn::Max(hn::Add(g, hn::Set(di, step_)), xl), xr), ea));
+      const auto t = hn::IfThenElseZero(hn::Gt(len, hn::Zero(d)),
+                                        hn::Div(hn::ConvertTo(d, hn::Sub(xi, ea)), hn::Max(len, hn::Set(d, 1.0f))));
       auto channel = [&](int c) {
         const auto ca = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at), pick);
-        return hn::Add(ca, hn::Mul(hn::TableLookupLanes(hn::LoadU(d, slope_[c] + at), pick), dx));
+        const auto cb = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at + 1), pick);
+        return hn::Add(ca, hn::Mul(t, hn::Sub(cb, ca)));
       };
       return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
     });
@@ -114,12 +109,12 @@ class HybridRows {
   static constexpr int kMaxEnds = 256;
   static constexpr int kMaxRows = kMaxEnds / 2;  // a row has at least two ends
   static constexpr int kPad = 2 * HWY_MAX_BYTES / sizeof(float);  // keeps every array 64-byte aligned
-  const PhongSpanInput in_;  // a copy: the caller's planes may live in a frame that ends first
+  const PhongSpanInput& in_;
   const int step_, shift_;
   int rows_ = 0, ends_ = 0;
   Row rows_at_[kMaxRows];
   alignas(64) int32_t end_x_[kMaxEnds + kPad], end_dy_[kMaxEnds + kPad];
-  alignas(64) float end_c_[3][kMaxEnds + kPad], slope_[3][kMaxEnds + kPad];
+  alignas(64) float end_c_[3][kMaxEnds + kPad];
 };
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
@@ -133,7 +128,7 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadeConstants& k = frame.shade;
-  std::optional<HybridRows<kLocal, kSrgb, kBrdf>> rows;
+  std::optional<HybridRows<kLocal, kSrgb, kBrdf>> rows;  // built once `in` is ready
   DrawByRowRuns<kLocal, kSrgb, kBrdf>(
       frame, entry, tt, kHybridMinWidthPx,
       [&](const PhongSpanInput& in) {
@@ -150,8 +145,8 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
       },
       [&](const PhongSpanInput&, int xl, int xr, int py, int x0, int x1, RowTarget row) {
         rows->add(py, xl, xr, x0, x1, row);
-      });
-  if (rows) rows->flush();
+      },
+      [&](const PhongSpanInput&) { rows->flush(); });
 }
 
 using HybridSpanFn = void (*)(const PhongSpanInput&, const HybridRun&, int, int, int, RowTarget);

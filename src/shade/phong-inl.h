@@ -163,10 +163,15 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
 // the reference (through DrawPhong); the others walk rows through the
 // whole triangle, tile rows only, because a row's covered run [xl, xr] fixes where segment or
 // block ends go, whatever tile this is. on_setup(in) runs once, when the first run is found
-// (planes are ready then); run(in, xl, xr, py, x0, x1, row) shades the tile's part [x0, x1].
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, typename OnSetup, typename Run>
+// (planes are ready then); run(in, xl, xr, py, x0, x1, row) shades the tile's part [x0, x1];
+// finish(in) runs after the last run, while `in` still lives (for kernels that batch rows).
+struct NoFinish {
+  void operator()(const PhongSpanInput&) const {}
+};
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, typename OnSetup, typename Run,
+          typename Finish = NoFinish>
 HWY_INLINE void DrawByRowRuns(const Frame& frame, uint32_t entry, const TileTarget& tt,
-                              int min_width_px, OnSetup&& on_setup, Run&& run) {
+                              int min_width_px, OnSetup&& on_setup, Run&& run, Finish&& finish = {}) {
   const SetupTriangle& whole = frame.triangle(entry);
   if (whole.px_max[0] - whole.px_min[0] + 1 < min_width_px || (kSpecular && ShadesInDouble(frame, entry))) {
     DrawPhong<kLocal, kSrgb, kBrdf, kSpecular>(frame, entry, tt);
@@ -193,6 +198,7 @@ HWY_INLINE void DrawByRowRuns(const Frame& frame, uint32_t entry, const TileTarg
     }
     run(in, xl, xr, py, x0, x1, tile_row(tt, py));
   });
+  if (ready) finish(in);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -109,10 +109,8 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
       const int ea = std::clamp(g, run.xl, run.xr), eb = std::clamp(g + step, run.xl, run.xr);
       const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py));
       const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py));
-      for (int ch = 0; ch < 3; ++ch) {
-        const float slope = eb > ea ? (cb.c[ch] - ca.c[ch]) / static_cast<float>(eb - ea) : 0.0f;
-        rgb.c[ch] = ca.c[ch] + slope * static_cast<float>(px - ea);
-      }
+      const float t = eb > ea ? static_cast<float>(px - ea) / static_cast<float>(eb - ea) : 0.0f;
+      for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = ca.c[ch] + t * (cb.c[ch] - ca.c[ch]);
     }
     row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
                               quantize_like_simd(rgb.c[2], srgb));
