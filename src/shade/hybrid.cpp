@@ -20,8 +20,10 @@ namespace fastshade {
 namespace HWY_NAMESPACE {
 
 // Triangles narrower than this (whole bounding box, not the tile's part of it, so that every
-// tile decides alike) take per-pixel Phong: a segment end costs as much as a pixel.
-inline constexpr int kHybridMinWidthPx = 8;
+// tile decides alike) take per-pixel Phong: a segment end costs as much as a pixel, and a
+// batch of rows has a fixed cost. Measured (docs/PERFORMANCE.md): at 8 the batched rows made
+// the bunny frame 1.3x slower than per-row ends; at 16, 1.13x, with the spot 4K frame 0.66x.
+inline constexpr int kHybridMinWidthPx = 16;
 
 // The rows of one triangle in one tile, with their segment ends shaded together: a row of a
 // small triangle has only a few ends, which alone would fill a fraction of a vector (on a
@@ -47,7 +49,7 @@ class HybridRows {
     const int g0 = x0 & ~(step_ - 1), g_last = (x1 & ~(step_ - 1)) + step_;
     const int count = (g_last - g0) / step_ + 1;
     if (ends_ + count > kMaxEnds || rows_ == kMaxRows) flush();
-    rows_at_[rows_++] = {py, xl, xr, x0, x1, ends_, target};
+    rows_at_[rows_++] = {py, xl, xr, x0, x1, ends_, target.depth, target.color, target.alpha_xor};
     for (int g = g0; g <= g_last; g += step_, ++ends_) {
       end_x_[ends_] = std::clamp(g, xl, xr);
       end_dy_[ends_] = py - in_.bary.ay;
@@ -73,9 +75,11 @@ class HybridRows {
   }
 
  private:
-  struct Row {
+  struct Row {  // trivially constructible: the buffer of rows costs nothing to create
     int py, xl, xr, x0, x1, first_end;
-    RowTarget target;
+    float* depth;
+    uint32_t* color;
+    uint32_t alpha_xor;
   };
 
   // A vector of `lanes` pixels meets at most lanes / step + 1 segments (step >= 2), whose
@@ -83,7 +87,7 @@ class HybridRows {
   // colours loaded at the vector's first segment (and one further, for eb). Lanes past x1
   // (masked off) take x1's, so every pick is one of the row's segments.
   void interpolate(const Row& row) {
-    ShadeSpan(in_.bary, in_.depth, row.py, row.x0, row.x1, row.target, [&](auto d, const auto& o) {
+    ShadeSpan(in_.bary, in_.depth, row.py, row.x0, row.x1, RowTarget{row.depth, row.color, row.alpha_xor}, [&](auto d, const auto& o) {
       const hn::RebindToSigned<decltype(d)> di;
       const auto xi = hn::Min(hn::Add(hn::ConvertTo(di, hn::Add(o.block_dx, o.k)), hn::Set(di, in_.bary.ax)),
                               hn::Set(di, row.x1));
