@@ -1,5 +1,5 @@
-// `hybrid`: Phong at the ends of segments of 2^m pixels, linear in between, m chosen per
-// 16-pixel block from the normal's turn and the highlight's nearness (shade/hybrid.h).
+// `hybrid`: Phong at the ends of segments of 2^m pixels along a row, linear in between, m
+// chosen per triangle from the normal's turn and the highlight's nearness (shade/hybrid.h).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shade/hybrid.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
