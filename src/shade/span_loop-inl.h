@@ -65,15 +65,19 @@ HWY_INLINE V QuantizeLevel(D d, V v) {
   return hn::Floor(hn::Add(hn::Mul(v, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
 }
 
-// The three levels (integers 0..255 held exactly in floats) meet in one float, r + 256 g +
-// 65536 b < 2^24, also exact, so the pixel needs one conversion to integer instead of three
-// (each conversion carries Highway's overflow fix-up) and no shifts.
+// The three levels (integers 0..255 held exactly in floats) become the pixel without a
+// float-to-integer conversion: 2^23 + x, for an integer x < 2^23, holds x exactly in its
+// mantissa under the exponent bits 0x4B000000, so a bit cast reads x off. r + 256 g is such
+// an x; b is another, shifted into place (its exponent bits shift out), and OR-ing the alpha
+// byte covers the 0x4B of the first.
 template <bool kSrgb, class D, class V = hn::Vec<D>>
 HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
   const hn::RebindToUnsigned<D> du;
-  const V rgb = hn::Add(hn::Add(QuantizeLevel<kSrgb>(d, r), hn::Mul(QuantizeLevel<kSrgb>(d, g), hn::Set(d, 256.0f))),
-                        hn::Mul(QuantizeLevel<kSrgb>(d, b), hn::Set(d, 65536.0f)));
-  return hn::Or(hn::BitCast(du, hn::ConvertTo(hn::RebindToSigned<D>(), rgb)), hn::Set(du, 0xFF000000u));
+  const V magic = hn::Set(d, 8388608.0f);  // 2^23
+  const V rg = hn::Add(QuantizeLevel<kSrgb>(d, r), hn::Mul(QuantizeLevel<kSrgb>(d, g), hn::Set(d, 256.0f)));
+  const auto rg_bits = hn::BitCast(du, hn::Add(rg, magic));
+  const auto b_bits = hn::BitCast(du, hn::Add(QuantizeLevel<kSrgb>(d, b), magic));
+  return hn::Or(hn::Or(rg_bits, hn::ShiftLeft<16>(b_bits)), hn::Set(du, 0xFF000000u));
 }
 
 // Walks one covered row span a vector at a time: depth test against the tile, then
