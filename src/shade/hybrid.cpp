@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <optional>
 
 #include <hwy/highway.h>
 
@@ -21,8 +20,8 @@ namespace HWY_NAMESPACE {
 
 // Triangles narrower than this (whole bounding box, not the tile's part of it, so that every
 // tile decides alike) take per-pixel Phong: a segment end costs as much as a pixel, and a
-// batch of rows has a fixed cost. Measured (docs/PERFORMANCE.md): at 8 the batched rows made
-// the bunny frame 1.3x slower than per-row ends; at 16, 1.13x, with the spot 4K frame 0.66x.
+// batch of rows has a fixed cost. Measured (docs/PERFORMANCE.md, session 4): 16 beat 8 on both
+// the bunny (0.95x) and the spot 4K frame (0.99x).
 inline constexpr int kHybridMinWidthPx = 16;
 
 // The rows of one triangle in one tile, with their segment ends shaded together: a row of a
@@ -38,12 +37,17 @@ inline constexpr int kHybridMinWidthPx = 16;
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 class HybridRows {
  public:
-  HybridRows(const PhongSpanInput& in, int step) : in_(in), step_(step), shift_(std::countr_zero(unsigned(step))) {}
+  // For one triangle: its planes (which must outlive the rows' flush) and segment length.
+  void start(const PhongSpanInput& in, int step) {
+    in_ = &in;
+    step_ = step;
+    shift_ = std::countr_zero(static_cast<unsigned>(step));
+  }
 
   void add(int py, int xl, int xr, int x0, int x1, RowTarget target) {
     if (step_ == 1) {  // per-pixel Phong
-      ShadeSpan(in_.bary, in_.depth, py, x0, x1, target,
-                [&](auto d, const auto& o) { return PhongShade<kLocal, kSrgb, kBrdf>(d, in_, o); });
+      ShadeSpan(in_->bary, in_->depth, py, x0, x1, target,
+                [&](auto d, const auto& o) { return PhongShade<kLocal, kSrgb, kBrdf>(d, *in_, o); });
       return;
     }
     const int g0 = x0 & ~(step_ - 1), g_last = (x1 & ~(step_ - 1)) + step_;
@@ -52,7 +56,7 @@ class HybridRows {
     rows_at_[rows_++] = {py, xl, xr, x0, x1, ends_, target.depth, target.color, target.alpha_xor};
     for (int g = g0; g <= g_last; g += step_, ++ends_) {
       end_x_[ends_] = std::clamp(g, xl, xr);
-      end_dy_[ends_] = py - in_.bary.ay;
+      end_dy_[ends_] = py - in_->bary.ay;
     }
   }
 
@@ -64,8 +68,8 @@ class HybridRows {
     for (int j = ends_; j < ends_ + lanes; ++j)  // padding: the last end repeated
       end_x_[j] = end_x_[ends_ - 1], end_dy_[j] = end_dy_[ends_ - 1];
     for (int j = 0; j < ends_; j += lanes) {
-      const auto o = MakeLaneOffsets(d, in_.bary, hn::Load(di, end_x_ + j), hn::ConvertTo(d, hn::Load(di, end_dy_ + j)));
-      const auto c = PhongColor<kLocal, kBrdf>(d, in_, o);
+      const auto o = MakeLaneOffsets(d, in_->bary, hn::Load(di, end_x_ + j), hn::ConvertTo(d, hn::Load(di, end_dy_ + j)));
+      const auto c = PhongColor<kLocal, kBrdf>(d, *in_, o);
       hn::Store(c.r, d, end_c_[0] + j);
       hn::Store(c.g, d, end_c_[1] + j);
       hn::Store(c.b, d, end_c_[2] + j);
@@ -87,9 +91,9 @@ class HybridRows {
   // colours loaded at the vector's first segment (and one further, for eb). Lanes past x1
   // (masked off) take x1's, so every pick is one of the row's segments.
   void interpolate(const Row& row) {
-    ShadeSpan(in_.bary, in_.depth, row.py, row.x0, row.x1, RowTarget{row.depth, row.color, row.alpha_xor}, [&](auto d, const auto& o) {
+    ShadeSpan(in_->bary, in_->depth, row.py, row.x0, row.x1, RowTarget{row.depth, row.color, row.alpha_xor}, [&](auto d, const auto& o) {
       const hn::RebindToSigned<decltype(d)> di;
-      const auto xi = hn::Min(hn::Add(hn::ConvertTo(di, hn::Add(o.block_dx, o.k)), hn::Set(di, in_.bary.ax)),
+      const auto xi = hn::Min(hn::Add(hn::ConvertTo(di, hn::Add(o.block_dx, o.k)), hn::Set(di, in_->bary.ax)),
                               hn::Set(di, row.x1));
       const auto seg = hn::ShiftRightSame(xi, shift_);
       const int first_seg = hn::GetLane(seg);
@@ -113,8 +117,10 @@ class HybridRows {
   static constexpr int kMaxEnds = 256;
   static constexpr int kMaxRows = kMaxEnds / 2;  // a row has at least two ends
   static constexpr int kPad = 2 * HWY_MAX_BYTES / sizeof(float);  // keeps every array 64-byte aligned
-  const PhongSpanInput& in_;
-  const int step_, shift_;
+  // No member is initialised beyond these: the buffers are written before they are read, and
+  // zeroing them (as std::optional's storage was) cost 12 KB of memset per triangle and tile.
+  const PhongSpanInput* in_ = nullptr;
+  int step_ = 1, shift_ = 0;
   int rows_ = 0, ends_ = 0;
   Row rows_at_[kMaxRows];
   alignas(64) int32_t end_x_[kMaxEnds + kPad], end_dy_[kMaxEnds + kPad];
@@ -124,7 +130,8 @@ class HybridRows {
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,
                     RowTarget row) {
-  HybridRows<kLocal, kSrgb, kBrdf> rows(in, run.step);
+  HybridRows<kLocal, kSrgb, kBrdf> rows;
+  rows.start(in, run.step);
   rows.add(py, run.xl, run.xr, x0, x1, row);
   rows.flush();
 }
@@ -132,7 +139,7 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadeConstants& k = frame.shade;
-  std::optional<HybridRows<kLocal, kSrgb, kBrdf>> rows;  // built once `in` is ready
+  HybridRows<kLocal, kSrgb, kBrdf> rows;  // started once `in` is ready
   DrawByRowRuns<kLocal, kSrgb, kBrdf>(
       frame, entry, tt, kHybridMinWidthPx,
       [&](const PhongSpanInput& in) {
@@ -145,12 +152,12 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
           normals.pos_view[i] =
               kLocal ? frame.vertex(entry, t.attr[i], &AttrArrays::pos_view) : glm::vec3(0.0f);
         }
-        rows.emplace(in, hybrid_triangle_step(in, normals, k.hybrid_tolerance));
+        rows.start(in, hybrid_triangle_step(in, normals, k.hybrid_tolerance));
       },
       [&](const PhongSpanInput&, int xl, int xr, int py, int x0, int x1, RowTarget row) {
-        rows->add(py, xl, xr, x0, x1, row);
+        rows.add(py, xl, xr, x0, x1, row);
       },
-      [&](const PhongSpanInput&) { rows->flush(); });
+      [&](const PhongSpanInput&) { rows.flush(); });
 }
 
 using HybridSpanFn = void (*)(const PhongSpanInput&, const HybridRun&, int, int, int, RowTarget);
