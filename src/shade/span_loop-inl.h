@@ -233,13 +233,13 @@ HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&&
 template <typename ShadeFn>
 HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
   const PixelRect& r = tri.rect;
-  if (r.x1 - r.x0 < kNarrowRectPx) {
-    if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt, nullptr)) return;
-    tri.edges = triangle_edges(*tri.tri);
+  const bool narrow = r.x1 - r.x0 < kNarrowRectPx;
+  if (narrow && (r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt, nullptr)) return;
+  tri.edges = triangle_edges(*tri.tri);
+  if (narrow) {
     ShadePacked(tri, tt, shade);
     return;
   }
-  tri.edges = triangle_edges(*tri.tri);
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
     tri.set_up_planes();
     ShadeSpan(tri.bary, tri.depth, py, x0, x1, tile_row(tt, py), shade);
