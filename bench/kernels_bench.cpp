@@ -40,8 +40,10 @@ struct Setup {
     shade.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(1, 1, 2.732f)), glm::vec3(1)});
     material = {glm::vec3(0.7f), glm::vec3(0.5f), 100.0f, 100.0, make_brdf(parse_brdf(brdf, "bench"), 100.0)};
     const Plane depth_plane = make_plane(bary, 0.5, 0.5, 0.5);
-    gouraud = {bary, depth_plane, {make_plane(bary, 0.2, 0.5, 0.8), make_plane(bary, 0.3, 0.4, 0.1), make_plane(bary, 0.9, 0.1, 0.5)},
-               make_plane(bary, tri.inv_w[0], tri.inv_w[1], tri.inv_w[2])};
+    const glm::vec3 colors[3] = {{0.2f, 0.3f, 0.9f}, {0.5f, 0.4f, 0.1f}, {0.8f, 0.1f, 0.5f}};
+    gouraud.bary = bary;
+    gouraud.depth = depth_plane;
+    set_gouraud_colors(gouraud, colors, tri.inv_w);
     phong.bary = bary;
     phong.depth = depth_plane;
     const glm::vec3 n[3] = {glm::normalize(glm::vec3(0.3f, 0.1f, 1)), glm::normalize(glm::vec3(-0.2f, 0.2f, 1)),

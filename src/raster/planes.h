@@ -68,9 +68,12 @@ inline PixelOffsets pixel_offsets(const Barycentrics& b, int px, int py) {
 // The value at a pixel: seeded from the plane at its block origin (limits::kSeedBlockPx),
 // plus k constant increments gx, clamped. The exact sequence of float operations every SIMD
 // kernel performs (no FMA), so scalar and vector paths agree bit for bit.
-inline float plane_at(const Plane& p, const PixelOffsets& o) {
+inline float plane_at_unclamped(const Plane& p, const PixelOffsets& o) {
   const float seed = (p.v0 + p.gy * o.dy) + p.gx * o.block_dx;
-  return std::clamp(seed + p.gx * o.k, p.lo, p.hi);
+  return seed + p.gx * o.k;
+}
+inline float plane_at(const Plane& p, const PixelOffsets& o) {
+  return std::clamp(plane_at_unclamped(p, o), p.lo, p.hi);
 }
 
 }  // namespace fastshade

@@ -1,6 +1,7 @@
 // `gouraud`: Blinn-Phong at the vertices (front/vertex_stage.cpp), the colour interpolated
-// perspective-correctly per pixel: (c/w) / (1/w) from four planes stepped by constant
-// increments inside each 16-pixel block (the paper's eq. 1-2, raster/planes.h).
+// perspective-correctly per pixel: (255 c/w) / (1/w) from four planes stepped by constant
+// increments inside each 16-pixel block (the paper's eq. 1-2, raster/planes.h), which is the
+// output level before rounding.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shade/gouraud.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -15,12 +16,21 @@ HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
 
+// The level of channel c before rounding, clamped to the vertex levels' range (span_kernels.h
+// says why), then rounded; sRGB takes the curve on the colour in [0, 1].
+template <bool kSrgb, class D, class V = hn::Vec<D>>
+HWY_INLINE V GouraudLevel(D d, const GouraudSpanInput& in, int c, V w, const LaneOffsets<D>& o) {
+  V level = hn::Mul(EvalPlaneUnclamped(d, in.level_over_w[c], o), w);
+  level = hn::Min(hn::Max(level, hn::Set(d, in.level_lo[c])), hn::Set(d, in.level_hi[c]));
+  if constexpr (kSrgb) return QuantizeLevel<true>(d, hn::Mul(level, hn::Set(d, 1.0f / 255.0f)));
+  return hn::Floor(hn::Add(level, hn::Set(d, 0.5f)));
+}
+
 template <bool kSrgb, class D>
 HWY_INLINE auto GouraudShade(D d, const GouraudSpanInput& in, const LaneOffsets<D>& o) {
   const auto w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, in.inv_w, o));
-  return PackRGBA<kSrgb>(d, hn::Mul(EvalPlane(d, in.c_over_w[0], o), w),
-                         hn::Mul(EvalPlane(d, in.c_over_w[1], o), w),
-                         hn::Mul(EvalPlane(d, in.c_over_w[2], o), w));
+  return PackLevels(d, GouraudLevel<kSrgb>(d, in, 0, w, o), GouraudLevel<kSrgb>(d, in, 1, w, o),
+                    GouraudLevel<kSrgb>(d, in, 2, w, o));
 }
 
 // kSpecular = false: `auto`'s diffuse-only Gouraud (the vertex stage lit the vertices
@@ -35,21 +45,19 @@ void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   GouraudSpanInput in;
   bool ready = false;
   auto set_up = [&] {
-    double c_over_w[3][3];
+    glm::vec3 color[3];
     for (int i = 0; i < 3; ++i) {
-      glm::vec3 color = frame.vertex(entry, t.attr[i], &AttrArrays::color);
+      color[i] = frame.vertex(entry, t.attr[i], &AttrArrays::color);
       if (k.two_sided && (t.flags & kBackFacing)) {  // the vertex stage lit the front side only
         const glm::vec3 v_view =
             k.local_viewer ? glm::normalize(-frame.vertex(entry, t.attr[i], &AttrArrays::pos_view))
                            : glm::vec3(0, 0, 1);
         const glm::vec3 n_view = frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
-        color = vertex_color<kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k);
+        color[i] = vertex_color<kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k);
       }
-      for (int c = 0; c < 3; ++c) c_over_w[i][c] = double(color[c]) * t.inv_w[i];
     }
-    for (int c = 0; c < 3; ++c)
-      in.c_over_w[c] = make_plane(tri.bary, c_over_w[0][c], c_over_w[1][c], c_over_w[2][c]);
-    in.inv_w = make_plane(tri.bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+    in.bary = tri.bary;  // the planes' frame; coverage and depth come from `tri`
+    set_gouraud_colors(in, color, t.inv_w);
     ready = true;
   };
   ShadeTriangle(tri, tt, [&](auto d, const auto& o) {

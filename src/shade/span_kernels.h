@@ -2,6 +2,7 @@
 // against its scalar reference: what a kernel reads is set up once per triangle (raster/
 // planes.h), and a call shades one row span [x0, x1] of it into a tile row.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 
 #include "frame/shade_constants.h"
@@ -17,12 +18,31 @@ struct RowTarget {
   uint32_t alpha_xor = 0;  // XORed into every stored pixel: tags a classified path's pixels
 };
 
+// Gouraud interpolates 255 x colour, so its quotient by 1/w is the output level before
+// rounding: no multiply by 255 per pixel. The quotient is clamped once, to the range of the
+// vertex levels, instead of clamping each plane to its vertex values: a perspective-correct
+// colour is a convex combination of the vertex colours, so this range holds every correct
+// value (and bounds a sliver's imprecise planes more tightly than clamping numerator and
+// denominator apart did), and it is also the [0, 255] clamp of quantisation.
 struct GouraudSpanInput {
   Barycentrics bary;
   Plane depth;
-  Plane c_over_w[3];  // vertex colour / w
+  Plane level_over_w[3];          // 255 x vertex colour / w, per channel (lo, hi unused)
   Plane inv_w;
+  float level_lo[3], level_hi[3];  // 255 x the vertex colours' range, within [0, 255]
 };
+// The level planes and bounds from the vertex colours and 1/w (bary set already); inline, so
+// each kernel target compiles it with its own instructions.
+FASTSHADE_FORCE_INLINE void set_gouraud_colors(GouraudSpanInput& in, const glm::vec3 color[3], const float inv_w[3]) {
+  for (int c = 0; c < 3; ++c) {
+    in.level_over_w[c] = make_plane(in.bary, 255.0 * color[0][c] * inv_w[0], 255.0 * color[1][c] * inv_w[1],
+                                    255.0 * color[2][c] * inv_w[2]);
+    const auto [lo, hi] = std::minmax({color[0][c], color[1][c], color[2][c]});
+    in.level_lo[c] = 255.0f * std::clamp(lo, 0.0f, 1.0f);
+    in.level_hi[c] = 255.0f * std::clamp(hi, 0.0f, 1.0f);
+  }
+  in.inv_w = make_plane(in.bary, inv_w[0], inv_w[1], inv_w[2]);
+}
 
 struct PhongSpanInput {
   Barycentrics bary;

@@ -42,11 +42,14 @@ HWY_INLINE LaneOffsets<D> MakeLaneOffsets(D d, const Barycentrics& b, VI px, hn:
 // plane_at() in raster/planes.h, lane by lane: the same float operations in the same order,
 // so a pixel gets the same bits whether its row or its block was walked, at any width.
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V EvalPlane(D d, const Plane& p, const LaneOffsets<D>& o) {
+HWY_INLINE V EvalPlaneUnclamped(D d, const Plane& p, const LaneOffsets<D>& o) {
   const V gx = hn::Set(d, p.gx);
   const V seed = hn::Add(hn::Add(hn::Set(d, p.v0), hn::Mul(hn::Set(d, p.gy), o.dy)), hn::Mul(gx, o.block_dx));
-  const V v = hn::Add(seed, hn::Mul(gx, o.k));
-  return hn::Min(hn::Max(v, hn::Set(d, p.lo)), hn::Set(d, p.hi));
+  return hn::Add(seed, hn::Mul(gx, o.k));
+}
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V EvalPlane(D d, const Plane& p, const LaneOffsets<D>& o) {
+  return hn::Min(hn::Max(EvalPlaneUnclamped(d, p, o), hn::Set(d, p.lo)), hn::Set(d, p.hi));
 }
 
 // clamp to [0, 1] (NaN becomes 0: x86 max returns its second operand), optional sRGB curve,
@@ -70,14 +73,19 @@ HWY_INLINE V QuantizeLevel(D d, V v) {
 // mantissa under the exponent bits 0x4B000000, so a bit cast reads x off. r + 256 g is such
 // an x; b is another, shifted into place (its exponent bits shift out), and OR-ing the alpha
 // byte covers the 0x4B of the first.
-template <bool kSrgb, class D, class V = hn::Vec<D>>
-HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE auto PackLevels(D d, V r, V g, V b) {
   const hn::RebindToUnsigned<D> du;
   const V magic = hn::Set(d, 8388608.0f);  // 2^23
-  const V rg = hn::Add(QuantizeLevel<kSrgb>(d, r), hn::Mul(QuantizeLevel<kSrgb>(d, g), hn::Set(d, 256.0f)));
-  const auto rg_bits = hn::BitCast(du, hn::Add(rg, magic));
-  const auto b_bits = hn::BitCast(du, hn::Add(QuantizeLevel<kSrgb>(d, b), magic));
+  const auto rg_bits = hn::BitCast(du, hn::Add(hn::Add(r, hn::Mul(g, hn::Set(d, 256.0f))), magic));
+  const auto b_bits = hn::BitCast(du, hn::Add(b, magic));
   return hn::Or(hn::Or(rg_bits, hn::ShiftLeft<16>(b_bits)), hn::Set(du, 0xFF000000u));
+}
+
+// Colour channels in [0, 1] (clamped here) to the pixel.
+template <bool kSrgb, class D, class V = hn::Vec<D>>
+HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
+  return PackLevels(d, QuantizeLevel<kSrgb>(d, r), QuantizeLevel<kSrgb>(d, g), QuantizeLevel<kSrgb>(d, b));
 }
 
 // Walks one covered row span a vector at a time: depth test against the tile, then

@@ -40,7 +40,13 @@ void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, 
     if (!depth_pass(in.depth, o, row.depth[px])) continue;
     const float w = 1.0f / plane_at(in.inv_w, o);
     uint8_t c[3];
-    for (int i = 0; i < 3; ++i) c[i] = quantize_like_simd(plane_at(in.c_over_w[i], o) * w, srgb);
+    for (int i = 0; i < 3; ++i) {
+      float level = plane_at_unclamped(in.level_over_w[i], o) * w;
+      level = level > in.level_lo[i] ? level : in.level_lo[i];  // x86 max and min: NaN takes the bound
+      level = level < in.level_hi[i] ? level : in.level_hi[i];
+      c[i] = srgb ? quantize_like_simd(level * (1.0f / 255.0f), true)
+                  : static_cast<uint8_t>(static_cast<int32_t>(std::floor(level + 0.5f)));
+    }
     row.color[px] = pack_rgba(c[0], c[1], c[2]);
   }
 }

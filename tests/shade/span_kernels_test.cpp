@@ -95,9 +95,13 @@ TEST_F(SpanKernels, GouraudMatchesScalarReferenceOnEveryIsa) {
     select_isa(isa);
     for (int trial = 0; trial < 6; ++trial) {
       const Fixture f = random_triangle(rng);
-      GouraudSpanInput in{f.bary, make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]),
-                          {random_plane(f, rng, 0, 1), random_plane(f, rng, 0, 1), random_plane(f, rng, 0, 1)},
-                          make_plane(f.bary, f.tri.inv_w[0], f.tri.inv_w[1], f.tri.inv_w[2])};
+      std::uniform_real_distribution<float> u(0.0f, 1.3f);  // lit vertices may pass 1
+      glm::vec3 colors[3];
+      for (glm::vec3& c : colors) c = {u(rng), u(rng), u(rng)};
+      GouraudSpanInput in;
+      in.bary = f.bary;
+      in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
+      set_gouraud_colors(in, colors, f.tri.inv_w);
       const int py = 100 + trial;
       for (bool srgb : {false, true})
         // Linear output is the same IEEE arithmetic in both: bit-exact. The sRGB curve's

@@ -178,8 +178,12 @@ TEST_F(StabilityKernels, HybridSegmentsOver65536PxWithinTheirDerivedBound) {
 // Colour planes over 65536 px: re-seeded every 16 px, so no forward-differencing drift.
 TEST_F(StabilityKernels, GouraudOver65536PxDoesNotDrift) {
   const double c0 = 0.2, c1 = 0.9;
-  GouraudSpanInput in{Barycentrics{0, 0, {}, {}, {}}, constant_plane(0.5f), {}, constant_plane(1.0f)};
-  for (int c = 0; c < 3; ++c) in.c_over_w[c] = Plane{float(c0), float((c1 - c0) / kSpanPx), 0, float(c0), float(c1)};
+  GouraudSpanInput in{Barycentrics{0, 0, {}, {}, {}}, constant_plane(0.5f), {}, constant_plane(1.0f), {}, {}};
+  for (int c = 0; c < 3; ++c) {
+    in.level_over_w[c] = Plane{float(255 * c0), float(255 * (c1 - c0) / kSpanPx), 0, 0, 0};
+    in.level_lo[c] = float(255 * c0);
+    in.level_hi[c] = float(255 * c1);
+  }
   double worst = 0;
   for (bool simd : {true, false}) {
     Row row(kSpanPx);
