@@ -97,18 +97,26 @@ HWY_INLINE void ShadeSpanAt(D d, const Barycentrics& bary, const Plane& depth_pl
   const hn::RebindToSigned<D> di;
   const hn::RebindToUnsigned<D> du;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  const auto iota = hn::Iota(di, 0);
-  const auto dy = hn::Set(d, static_cast<float>(py - bary.ay));
+  const auto step = hn::Set(di, lanes);
+  const auto end = hn::Set(di, x1 + 1);
+  auto xi = hn::Add(hn::Set(di, x0), hn::Iota(di, 0));
+  auto o = MakeLaneOffsets(d, bary, xi, hn::Set(d, static_cast<float>(py - bary.ay)));
+  // A vector as wide as a seed block meets the same in-block offsets k at every step, and
+  // its block origins move by one block (exact: small integers in float).
+  const bool block_wide = lanes == limits::kSeedBlockPx;
+  const auto block_step = hn::Set(d, static_cast<float>(limits::kSeedBlockPx));
   for (int x = x0; x <= x1; x += lanes) {
-    const auto xi = hn::Add(hn::Set(di, x), iota);
-    const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, x1 + 1)));
-    const auto o = MakeLaneOffsets(d, bary, xi, dy);
+    const auto inside = hn::RebindMask(d, hn::Lt(xi, end));
     const auto z = EvalPlane(d, depth_plane, o);
     const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
-    if (hn::AllFalse(d, pass)) continue;
-    const auto rgba = hn::Xor(shade(d, o, x), hn::Set(du, row.alpha_xor));
-    hn::BlendedStore(z, pass, d, row.depth + x);
-    hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
+    if (!hn::AllFalse(d, pass)) {
+      const auto rgba = hn::Xor(shade(d, o, x), hn::Set(du, row.alpha_xor));
+      hn::BlendedStore(z, pass, d, row.depth + x);
+      hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
+    }
+    xi = hn::Add(xi, step);
+    if (block_wide) o.block_dx = hn::Add(o.block_dx, block_step);
+    else o = MakeLaneOffsets(d, bary, xi, o.dy);
   }
 }
 
