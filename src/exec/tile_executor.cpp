@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
-#include <cstring>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -45,9 +44,8 @@ std::vector<uint8_t> background_row(uint32_t rgba) {
 }
 
 void fill_rect(Image& image, const PixelRect& r, const std::vector<uint8_t>& row) {
-  const std::size_t bytes = std::size_t(r.x1 - r.x0 + 1) * 3;
-  for (int y = r.y0; y <= r.y1; ++y)
-    std::memcpy(image.rgb.data() + (std::size_t(y) * image.width + r.x0) * 3, row.data(), bytes);
+  stream_rows(row.data(), 0, image.rgb.data() + (std::size_t(r.y0) * image.width + r.x0) * 3, image.width * 3,
+              (r.x1 - r.x0 + 1) * 3, r.y1 - r.y0 + 1);
 }
 
 // A tile's triangles sit wherever their chunk put them and their vertices wherever the mesh

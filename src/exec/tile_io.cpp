@@ -2,8 +2,14 @@
 #define HWY_TARGET_INCLUDE "exec/tile_io.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include <hwy/cache_control.h>
 #include <hwy/highway.h>
 
+#include "core/limits.h"
 #include "exec/tile_io.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -11,25 +17,48 @@ namespace fastshade {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// One framebuffer row part from a buffer in cache, with non-temporal stores where dst is
+// vector-aligned: a 4K frame writes 25 MB that will not be read back before it leaves the
+// cache, and an ordinary store first reads the line it writes (read for ownership).
+void StreamRow(const uint8_t* src, uint8_t* dst, std::size_t bytes) {
+  const hn::ScalableTag<uint8_t> d8;
+  const std::size_t lanes = hn::Lanes(d8);
+  const std::size_t head = std::min(bytes, (lanes - reinterpret_cast<uintptr_t>(dst) % lanes) % lanes);
+  std::memcpy(dst, src, head);
+  std::size_t i = head;
+  for (; i + lanes <= bytes; i += lanes) hn::Stream(hn::LoadU(d8, src + i), d8, dst + i);
+  std::memcpy(dst + i, src + i, bytes - i);
+}
+
+void StreamRows(const uint8_t* src, int src_stride_bytes, uint8_t* dst, int dst_stride_bytes,
+                int row_bytes, int rows) {
+  for (int y = 0; y < rows; ++y)
+    StreamRow(src + std::ptrdiff_t(y) * src_stride_bytes, dst + std::ptrdiff_t(y) * dst_stride_bytes,
+              static_cast<std::size_t>(row_bytes));
+  hwy::FlushStream();  // the frame's reader, on another thread, must see the stores
+}
+
 void RgbaRowsToRgb(const uint32_t* src, int src_stride_px, uint8_t* dst, int dst_stride_bytes,
                    int width, int rows) {
   const hn::ScalableTag<uint8_t> d8;
   const int lanes = static_cast<int>(hn::Lanes(d8));
+  alignas(64) uint8_t row_rgb[limits::kMaxTilePx * 3];  // the row in cache, then streamed out
   for (int y = 0; y < rows; ++y) {
     const uint8_t* in = reinterpret_cast<const uint8_t*>(src + std::ptrdiff_t(y) * src_stride_px);
-    uint8_t* out = dst + std::ptrdiff_t(y) * dst_stride_bytes;
     int x = 0;
     for (; x + lanes <= width; x += lanes) {
       hn::Vec<decltype(d8)> r, g, b, a;
       hn::LoadInterleaved4(d8, in + 4 * x, r, g, b, a);
-      hn::StoreInterleaved3(r, g, b, d8, out + 3 * x);
+      hn::StoreInterleaved3(r, g, b, d8, row_rgb + 3 * x);
     }
     for (; x < width; ++x) {  // the row's tail
-      out[3 * x] = in[4 * x];
-      out[3 * x + 1] = in[4 * x + 1];
-      out[3 * x + 2] = in[4 * x + 2];
+      row_rgb[3 * x] = in[4 * x];
+      row_rgb[3 * x + 1] = in[4 * x + 1];
+      row_rgb[3 * x + 2] = in[4 * x + 2];
     }
+    StreamRow(row_rgb, dst + std::ptrdiff_t(y) * dst_stride_bytes, static_cast<std::size_t>(width) * 3);
   }
+  hwy::FlushStream();
 }
 
 TilePixelCounts CountTilePixels(const float* depth, const uint32_t* color, int stride_px, int width,
@@ -62,6 +91,7 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace fastshade {
 
+HWY_EXPORT(StreamRows);
 HWY_EXPORT(RgbaRowsToRgb);
 HWY_EXPORT(CountTilePixels);
 
@@ -81,6 +111,11 @@ TilePixelCounts count_tile_pixels_scalar(const float* depth, const uint32_t* col
       if (by_path && hit && (color[i] >> 24) < kShadePathCount) ++counts.path[color[i] >> 24];
     }
   return counts;
+}
+
+void stream_rows(const uint8_t* src, int src_stride_bytes, uint8_t* dst, int dst_stride_bytes,
+                 int row_bytes, int rows) {
+  HWY_DYNAMIC_DISPATCH(StreamRows)(src, src_stride_bytes, dst, dst_stride_bytes, row_bytes, rows);
 }
 
 void rgba_rows_to_rgb(const uint32_t* src, int src_stride_px, uint8_t* dst, int dst_stride_bytes,

@@ -7,7 +7,12 @@
 
 namespace fastshade {
 
-// Packed RGBA8 tile rows to RGB8 framebuffer rows (alpha dropped). SIMD on the chosen ISA.
+// Rows of bytes into the framebuffer (src_stride_bytes 0: the same row every time), with
+// non-temporal stores: what an empty tile writes.
+void stream_rows(const uint8_t* src, int src_stride_bytes, uint8_t* dst, int dst_stride_bytes,
+                 int row_bytes, int rows);
+// Packed RGBA8 tile rows to RGB8 framebuffer rows (alpha dropped). SIMD on the chosen ISA,
+// stored as stream_rows() does.
 void rgba_rows_to_rgb(const uint32_t* src, int src_stride_px, uint8_t* dst, int dst_stride_bytes,
                       int width, int rows);
 // The scalar reference.
