@@ -50,6 +50,7 @@ class HybridRows {
                 [&](auto d, const auto& o) { return PhongShade<kLocal, kSrgb, kBrdf>(d, *in_, o); });
       return;
     }
+    if (RowHidden(py, x0, x1, target)) return;
     const int g0 = x0 & ~(step_ - 1), g_last = (x1 & ~(step_ - 1)) + step_;
     const int count = (g_last - g0) / step_ + 1;
     if (ends_ + count > kMaxEnds || rows_ == kMaxRows) flush();
@@ -85,6 +86,24 @@ class HybridRows {
     uint32_t* color;
     uint32_t alpha_xor;
   };
+
+  // Whether no pixel of the row passes the depth test: then its segment ends need no Phong (a
+  // closed mesh drawn without culling hides about half its rows behind rows drawn before).
+  // Exact: nothing else draws into the tile before the flush that would use them, and
+  // interpolate() tests the same depths again.
+  bool RowHidden(int py, int x0, int x1, RowTarget target) const {
+    const hn::ScalableTag<float> d;
+    const hn::RebindToSigned<decltype(d)> di;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const auto dy = hn::Set(d, static_cast<float>(py - in_->bary.ay));
+    for (int x = x0; x <= x1; x += lanes) {
+      const auto xi = hn::Add(hn::Set(di, x), hn::Iota(di, 0));
+      const auto inside = hn::RebindMask(d, hn::Lt(xi, hn::Set(di, x1 + 1)));
+      const auto z = EvalPlane(d, in_->depth, MakeLaneOffsets(d, in_->bary, xi, dy));
+      if (!hn::AllFalse(d, hn::And(inside, hn::Lt(z, hn::LoadU(d, target.depth + x))))) return false;
+    }
+    return true;
+  }
 
   // A vector of `lanes` pixels meets at most lanes / step + 1 segments (step >= 2), whose
   // ends fit in one vector: lanes pick their segment's ends by permuting the vectors of end
