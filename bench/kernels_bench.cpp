@@ -43,7 +43,7 @@ struct Setup {
     const glm::vec3 colors[3] = {{0.2f, 0.3f, 0.9f}, {0.5f, 0.4f, 0.1f}, {0.8f, 0.1f, 0.5f}};
     gouraud.bary = bary;
     gouraud.depth = depth_plane;
-    set_gouraud_colors(gouraud, colors, tri.inv_w);
+    set_gouraud_colors(gouraud, bary, colors, tri.inv_w);
     phong.bary = bary;
     phong.depth = depth_plane;
     const glm::vec3 n[3] = {glm::normalize(glm::vec3(0.3f, 0.1f, 1)), glm::normalize(glm::vec3(-0.2f, 0.2f, 1)),

@@ -56,8 +56,7 @@ void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
         color[i] = vertex_color<kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k);
       }
     }
-    in.bary = tri.bary;  // the planes' frame; coverage and depth come from `tri`
-    set_gouraud_colors(in, color, t.inv_w);
+    set_gouraud_colors(in, tri.bary, color, t.inv_w);
     ready = true;
   };
   ShadeTriangle(tri, tt, [&](auto d, const auto& o) {

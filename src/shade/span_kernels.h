@@ -31,17 +31,21 @@ struct GouraudSpanInput {
   Plane inv_w;
   float level_lo[3], level_hi[3];  // 255 x the vertex colours' range, within [0, 255]
 };
-// The level planes and bounds from the vertex colours and 1/w (bary set already); inline, so
-// each kernel target compiles it with its own instructions.
-FASTSHADE_FORCE_INLINE void set_gouraud_colors(GouraudSpanInput& in, const glm::vec3 color[3], const float inv_w[3]) {
+// The level planes and bounds from the vertex colours and 1/w (in.bary and in.depth are left
+// alone: the frame's kernels take them from the triangle); inline, so each kernel target
+// compiles it with its own instructions.
+FASTSHADE_FORCE_INLINE void set_gouraud_colors(GouraudSpanInput& in, const Barycentrics& bary, const glm::vec3 color[3],
+                                               const float inv_w[3]) {
   for (int c = 0; c < 3; ++c) {
-    in.level_over_w[c] = make_plane(in.bary, 255.0 * color[0][c] * inv_w[0], 255.0 * color[1][c] * inv_w[1],
+    in.level_over_w[c] = make_plane(bary, 255.0 * color[0][c] * inv_w[0], 255.0 * color[1][c] * inv_w[1],
                                     255.0 * color[2][c] * inv_w[2]);
-    const auto [lo, hi] = std::minmax({color[0][c], color[1][c], color[2][c]});
-    in.level_lo[c] = 255.0f * std::clamp(lo, 0.0f, 1.0f);
-    in.level_hi[c] = 255.0f * std::clamp(hi, 0.0f, 1.0f);
+    // Pairwise min and max, not std::minmax or std::clamp: those branch, and mispredict.
+    const float lo = std::min(std::min(color[0][c], color[1][c]), color[2][c]);
+    const float hi = std::max(std::max(color[0][c], color[1][c]), color[2][c]);
+    in.level_lo[c] = 255.0f * std::min(std::max(lo, 0.0f), 1.0f);
+    in.level_hi[c] = 255.0f * std::min(std::max(hi, 0.0f), 1.0f);
   }
-  in.inv_w = make_plane(in.bary, inv_w[0], inv_w[1], inv_w[2]);
+  in.inv_w = make_plane(bary, inv_w[0], inv_w[1], inv_w[2]);
 }
 
 struct PhongSpanInput {

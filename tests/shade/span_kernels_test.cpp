@@ -101,7 +101,7 @@ TEST_F(SpanKernels, GouraudMatchesScalarReferenceOnEveryIsa) {
       GouraudSpanInput in;
       in.bary = f.bary;
       in.depth = make_plane(f.bary, f.tri.depth[0], f.tri.depth[1], f.tri.depth[2]);
-      set_gouraud_colors(in, colors, f.tri.inv_w);
+      set_gouraud_colors(in, f.bary, colors, f.tri.inv_w);
       const int py = 100 + trial;
       for (bool srgb : {false, true})
         // Linear output is the same IEEE arithmetic in both: bit-exact. The sRGB curve's
