@@ -7,16 +7,12 @@
 #include <hwy/highway.h>
 
 #include "classify/cone_batch.h"
+#include "core/dot3-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
-
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE V Dot3(V ax, V ay, V az, V bx, V by, V bz) {  // glm::dot's order: (x + y) + z
-  return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
-}
 
 // NormalCone::max_dot: cos(max(0, angle(axis, x) - half)).
 template <class D, class V = hn::Vec<D>>

@@ -68,6 +68,10 @@ inline constexpr int kBinPlanTiles = 256;
 // measured), so a block is ~60 us: far above the cost of handing it out, and a 35k-vertex
 // mesh still makes 9 blocks.
 inline constexpr int kVerticesPerBlock = 4096;
+// Vertices lit together in SIMD lanes (shade/vertex_light.h): their normals and positions wait
+// in two local arrays of this many (6 KB, in L1), and the call and its tail cost are spread
+// over 16 vectors at 16 lanes.
+inline constexpr int kVertexLightBatch = 256;
 
 // Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.
 inline constexpr double kMaxShininess = 1e6;

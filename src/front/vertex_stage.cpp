@@ -9,7 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/limits.h"
-#include "shade/lighting.h"
+#include "shade/vertex_light.h"
 
 namespace fastshade {
 
@@ -105,20 +105,25 @@ int run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const View
         tbb::blocked_range<uint32_t>(o.first_vertex, o.first_vertex + o.vertex_count,
                                       limits::kVerticesPerBlock),
         [&](const tbb::blocked_range<uint32_t>& r) {
-          for (uint32_t i = r.begin(); i != r.end(); ++i) {
-            const glm::vec4 pos_view = model_view * glm::vec4(g.positions[i], 1.0f);
-            out.store(i, proj * pos_view, vp);
-            if (!(needs.normal || needs.color || needs.position)) continue;
-            const glm::vec3 n_view = glm::normalize(normal_matrix * g.normals[i]);
-            if (needs.normal) attrs.n_view[i] = n_view;
-            if (needs.position) attrs.pos_view[i] = glm::vec3(pos_view);
-            if (needs.color) {
-              const glm::vec3 v_view = shade.local_viewer ? glm::normalize(-glm::vec3(pos_view))
-                                                          : glm::vec3(0, 0, 1);
-              attrs.color[i] = needs.diffuse_color
-                                   ? vertex_color<false>(n_view, v_view, !shade.local_viewer, material, shade)
-                                   : vertex_color<true>(n_view, v_view, !shade.local_viewer, material, shade);
+          // Lighting runs over batches of transformed vertices, in SIMD lanes; a batch's
+          // normals and positions wait in local arrays even where the method keeps neither.
+          constexpr uint32_t kBatch = limits::kVertexLightBatch;
+          glm::vec3 n_batch[kBatch], pos_batch[kBatch];
+          for (uint32_t first = r.begin(); first < r.end(); first += kBatch) {
+            const uint32_t count = std::min(kBatch, r.end() - first);
+            for (uint32_t j = 0; j < count; ++j) {
+              const uint32_t i = first + j;
+              const glm::vec4 pos_view = model_view * glm::vec4(g.positions[i], 1.0f);
+              out.store(i, proj * pos_view, vp);
+              if (!(needs.normal || needs.color || needs.position)) continue;
+              n_batch[j] = glm::normalize(normal_matrix * g.normals[i]);
+              pos_batch[j] = glm::vec3(pos_view);
+              if (needs.normal) attrs.n_view[i] = n_batch[j];
+              if (needs.position) attrs.pos_view[i] = pos_batch[j];
             }
+            if (needs.color)
+              light_vertices(n_batch, pos_batch, count, material, shade, !needs.diffuse_color,
+                             attrs.color.data() + first);
           }
         });
   }

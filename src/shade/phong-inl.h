@@ -11,6 +11,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dot3-inl.h"
 #include "shade/brdf-inl.h"
 #include "shade/method.h"
 #include "shade/methods.h"
@@ -20,15 +21,10 @@ HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
 
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE V Dot(V ax, V ay, V az, V bx, V by, V bz) {
-  return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
-}
-
 // Scales (x, y, z) to unit length; a zero vector (or one too short for InvSqrt) becomes zero.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void Normalize(D d, V& x, V& y, V& z) {
-  const V len2 = Dot<D>(x, y, z, x, y, z);
+  const V len2 = Dot3<D>(x, y, z, x, y, z);
   const V inv = hn::IfThenElseZero(hn::Ge(len2, hn::Set(d, fast_math::kMinInvSqrtInput)), InvSqrt(d, len2));
   x = hn::Mul(x, inv);
   y = hn::Mul(y, inv);
@@ -72,7 +68,7 @@ HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx
   for (const LightView& light : k.lights) {
     const V lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
             lz = hn::Set(d, light.l_view.z);
-    const V diffuse = hn::Max(Dot<D>(nx, ny, nz, lx, ly, lz), hn::Zero(d));
+    const V diffuse = hn::Max(Dot3<D>(nx, ny, nz, lx, ly, lz), hn::Zero(d));
     V specular = hn::Zero(d);
     if constexpr (kSpecular) {
       V hx, hy, hz;
@@ -86,7 +82,7 @@ HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx
         hy = hn::Set(d, light.h_view.y);
         hz = hn::Set(d, light.h_view.z);
       }
-      specular = Brdf<kBrdf>(d, Dot<D>(nx, ny, nz, hx, hy, hz), m.lobe);
+      specular = Brdf<kBrdf>(d, Dot3<D>(nx, ny, nz, hx, hy, hz), m.lobe);
     }
     auto channel = [&](V acc, int c) {
       const V kd_diffuse = hn::Mul(hn::Set(d, m.kd[c]), diffuse);

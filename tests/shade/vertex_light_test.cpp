@@ -1,0 +1,89 @@
+// Gouraud's vertex lighting in lanes (shade/vertex_light.h) against its scalar reference,
+// vertex_color(), on every compiled ISA, for every BRDF and batch lengths 0..2W+1.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "exec/isa.h"
+#include "shade/brdf.h"
+#include "shade/vertex_light.h"
+
+namespace fastshade {
+namespace {
+
+// The lanes differ from the scalar colour only through the BRDF kernels (tests/shade/
+// brdf_test.cpp: exp2/log2 1e-6 and acos/cos 4e-6 of the lobe, the others exact), scaled by
+// ks times the light's colour: far below the half LSB (2e-3) that would change a pixel.
+constexpr float kTolerance = 1e-5f;
+
+ShadeConstants two_lights() {
+  ShadeConstants k;
+  k.ambient = glm::vec3(0.05f, 0.1f, 0.02f);
+  k.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(1, 1, 2.732f)), glm::vec3(1)});
+  const glm::vec3 l2 = glm::normalize(glm::vec3(-0.3f, 0.2f, 0.9f));
+  k.lights.push_back({l2, glm::normalize(l2 + glm::vec3(0, 0, 1)), glm::vec3(0.6f, 0.5f, 0.9f)});
+  return k;
+}
+
+TEST(VertexLight, LanesMatchVertexColorOnEveryIsaBrdfAndLength) {
+  std::mt19937 rng(17);
+  std::normal_distribution<float> g(0.0f, 1.0f);
+  std::vector<glm::vec3> normals(40);
+  for (glm::vec3& n : normals) n = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
+  normals[1] = glm::normalize(glm::vec3(1, 1, 2.732f));  // on the first light's half vector
+  normals[2] = glm::vec3(0, 0, -1);                        // facing away from both lights
+  const ShadeConstants k = two_lights();
+  int isas = 0;
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    ++isas;
+    for (const std::string& brdf : brdf_names())
+      for (double n : {1.0, 37.5, 1000.0}) {
+        const MaterialConstants m{glm::vec3(0.7f, 0.6f, 0.5f), glm::vec3(0.5f, 0.4f, 0.6f), float(n), n,
+                                  make_brdf(parse_brdf(brdf, "test"), n)};
+        for (bool specular : {true, false})
+          for (std::size_t len = 0; len <= 2 * 16 + 1; ++len) {
+            std::vector<glm::vec3> simd(len + 1, glm::vec3(-7.0f)), scalar(len + 1, glm::vec3(-7.0f));
+            light_vertices(normals.data() + 1, nullptr, len, m, k, specular, simd.data());
+            light_vertices_scalar(normals.data() + 1, nullptr, len, m, k, specular, scalar.data());
+            ASSERT_EQ(simd[len], glm::vec3(-7.0f)) << "wrote past the end: " << isa;
+            for (std::size_t i = 0; i < len; ++i)
+              for (int c = 0; c < 3; ++c) {
+                ASSERT_NEAR(simd[i][c], scalar[i][c], kTolerance)
+                    << isa << " " << brdf << " n=" << n << " specular " << specular << " vertex " << i;
+                ASSERT_TRUE(simd[i][c] >= 0.0f && simd[i][c] <= 1.0f);
+              }
+            // Without a BRDF approximation in play, the lanes are the scalar arithmetic exactly.
+            if (!specular) {
+              for (std::size_t i = 0; i < len; ++i) ASSERT_EQ(simd[i], scalar[i]) << isa << " vertex " << i;
+            }
+          }
+      }
+  }
+  select_isa("best");
+  EXPECT_GE(isas, 1);
+}
+
+// A local viewer and a material lit in double take the scalar loop: the same colours exactly.
+TEST(VertexLight, LocalViewerAndDoubleMaterialsAreTheScalarColours) {
+  ShadeConstants k = two_lights();
+  k.local_viewer = true;
+  const std::vector<glm::vec3> normals = {glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0, 1, 0)};
+  const std::vector<glm::vec3> positions = {glm::vec3(0.5f, -0.2f, -3), glm::vec3(-1, 0.4f, -5)};
+  MaterialConstants m{glm::vec3(0.7f), glm::vec3(0.5f), 100.0f, 100.0, make_brdf(parse_brdf("exact", "test"), 100.0)};
+  for (bool in_double : {false, true}) {
+    m.shade_in_double = in_double;
+    k.local_viewer = !in_double;
+    std::vector<glm::vec3> simd(2), scalar(2);
+    light_vertices(normals.data(), positions.data(), 2, m, k, true, simd.data());
+    light_vertices_scalar(normals.data(), positions.data(), 2, m, k, true, scalar.data());
+    EXPECT_EQ(simd, scalar) << (in_double ? "material in double" : "local viewer");
+  }
+}
+
+}  // namespace
+}  // namespace fastshade
