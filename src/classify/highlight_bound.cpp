@@ -10,18 +10,20 @@ namespace fastshade {
 double arc_max(const dvec3& a, const dvec3& b, const dvec3& x) {
   const double ends = std::max(glm::dot(a, x), glm::dot(b, x));
   // The arc lies in the plane through a, b and the origin, with normal k. The great circle's
-  // nearest point to x is x's projection onto that plane, direction u, at x . u = |x_p|
-  // (NOTES.md's closed-form peak sqrt((X^2 + Y^2 - 2XYc) / (1 - c^2)), without dividing by
-  // 1 - c^2, which vanishes for nearly equal normals).
+  // nearest point to x is x's projection x_p onto that plane, direction u, at x . u = |x_p| =
+  // |x x k| / |k| (NOTES.md's closed-form peak sqrt((X^2 + Y^2 - 2XYc) / (1 - c^2)), without
+  // dividing by 1 - c^2, which vanishes for nearly equal normals; and not as
+  // sqrt(|x|^2 - (x . k)^2 / |k|^2), which cancels where x is nearly along k and then
+  // understates the peak by up to 1e-8). No square root or division before the tests below:
+  // most calls end there.
   const dvec3 k = glm::cross(a, b);
-  const double k_len = glm::length(k);
-  if (!(k_len > 0.0)) return ends;  // equal or antiparallel: no arc between them
-  const dvec3 k_unit = k / k_len;
-  const dvec3 x_plane = x - glm::dot(x, k_unit) * k_unit;
-  // u is between a and b (the short way round k) iff a x u and u x b both point along k.
-  if (glm::dot(glm::cross(a, x_plane), k) <= 0.0 || glm::dot(glm::cross(x_plane, b), k) <= 0.0)
-    return ends;
-  return std::max(ends, glm::length(x_plane));
+  const double k_len2 = glm::dot(k, k);
+  if (!(k_len2 > 0.0)) return ends;  // equal or antiparallel: no arc between them
+  // u is between a and b (the short way round k) iff a x u and u x b both point along k; x's
+  // part along k changes neither product's component along k, so x stands in for x_p.
+  if (glm::dot(glm::cross(a, x), k) <= 0.0 || glm::dot(glm::cross(x, b), k) <= 0.0) return ends;
+  const dvec3 x_k = glm::cross(x, k);
+  return std::max(ends, std::sqrt(glm::dot(x_k, x_k) / k_len2));
 }
 
 bool inside_cone(const dvec3 n[3], const dvec3& x) {
