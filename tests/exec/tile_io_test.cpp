@@ -2,6 +2,7 @@
 // 0..2W+1 (W up to 64 bytes of u8 lanes), and writes nothing past each row's width.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -28,6 +29,29 @@ TEST(TileIo, RgbaRowsToRgbMatchesScalarOnEveryIsaAndWidth) {
         for (int b = 3 * width; b < dst_stride; ++b)
           ASSERT_EQ(simd[std::size_t(y) * dst_stride + b], 0xAB) << isa << " wrote past the row";
     }
+  }
+  select_isa("best");
+}
+
+// The empty-tile fill: one source row (stride 0) or several into framebuffer rows at every
+// alignment, byte for byte what memcpy writes, and nothing past each row.
+TEST(TileIo, StreamRowsCopiesEveryRowAtEveryAlignment) {
+  std::mt19937 rng(47);
+  const int rows = 3, dst_stride = 3 * 256 + 13;
+  std::vector<uint8_t> src(std::size_t(3 * 256) * rows);
+  for (uint8_t& b : src) b = static_cast<uint8_t>(rng());
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    for (int src_stride : {0, 3 * 256})
+      for (int offset = 0; offset < 3; ++offset)
+        for (int bytes = 0; bytes <= 3 * 256; bytes += (bytes < 200 ? 1 : 61)) {
+          std::vector<uint8_t> dst(std::size_t(dst_stride) * rows + offset, 0xAB), expected = dst;
+          stream_rows(src.data(), src_stride, dst.data() + offset, dst_stride, bytes, rows);
+          for (int y = 0; y < rows; ++y)
+            std::copy_n(src.begin() + std::ptrdiff_t(y) * src_stride, bytes,
+                        expected.begin() + offset + std::ptrdiff_t(y) * dst_stride);
+          ASSERT_EQ(dst, expected) << isa << " src stride " << src_stride << " offset " << offset << " bytes " << bytes;
+        }
   }
   select_isa("best");
 }
