@@ -6,6 +6,7 @@
 #include <hwy/highway.h>
 
 #include "shade/brdf-inl.h"
+#include "shade/brdf_variants.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
@@ -27,16 +28,7 @@ void EvalArray(const BrdfParams& p, const float* c, float* out, size_t count) {
 }
 
 void EvalBrdf(const BrdfParams& p, const float* c, float* out, size_t count) {
-  switch (p.kind) {
-    case BrdfKind::Exact: return EvalArray<BrdfKind::Exact>(p, c, out, count);
-    case BrdfKind::CosK: return EvalArray<BrdfKind::CosK>(p, c, out, count);
-    case BrdfKind::Schlick: return EvalArray<BrdfKind::Schlick>(p, c, out, count);
-    case BrdfKind::SchlickPow2: return EvalArray<BrdfKind::SchlickPow2>(p, c, out, count);
-    case BrdfKind::Quadratic: return EvalArray<BrdfKind::Quadratic>(p, c, out, count);
-    case BrdfKind::QuadraticFit: return EvalArray<BrdfKind::QuadraticFit>(p, c, out, count);
-    case BrdfKind::Poly2: return EvalArray<BrdfKind::Poly2>(p, c, out, count);
-    case BrdfKind::Poly3: return EvalArray<BrdfKind::Poly3>(p, c, out, count);
-  }
+  with_brdf_kind(p.kind, [&](auto kind) { EvalArray<decltype(kind)::value>(p, c, out, count); });
 }
 
 }  // namespace HWY_NAMESPACE

@@ -33,7 +33,9 @@ inline constexpr int kHybridMinWidthPx = 16;
 // A pixel x of a row whose whole run in the triangle is [xl, xr] lies in the segment from
 // ea = clamp(g, xl, xr) to eb = clamp(g + step, xl, xr), g = x rounded down to a multiple of
 // step, and takes ca + t (cb - ca) with t = (x - ea) / (eb - ea) (0 if eb = ea): exactly what
-// hybrid_span_scalar() computes.
+// hybrid_span_scalar() computes. The ends are clamped to the row's run in the whole triangle,
+// not this tile's part of it: Phong is only ever evaluated inside, and a pixel's value does
+// not depend on the tiles.
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 class HybridRows {
  public:

@@ -10,10 +10,6 @@
 
 namespace fastshade {
 
-// The segment ends lie on the multiples of the step, clamped to the row's whole covered run
-// [xl, xr] in the triangle (not just this tile): Phong is only ever evaluated inside, and a
-// pixel's value does not depend on the tiles.
-
 // What the step decision needs of a triangle beyond its planes: unit vertex normals (view
 // space, flipped for two-sided back faces), 1/w at the vertices and, for a local viewer, their
 // view-space positions.

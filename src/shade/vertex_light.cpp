@@ -10,6 +10,7 @@
 
 #include "core/dot3-inl.h"
 #include "shade/brdf-inl.h"
+#include "shade/brdf_variants.h"
 #include "shade/lighting.h"
 #include "shade/vertex_light.h"
 
@@ -71,16 +72,8 @@ void LightBlock(const glm::vec3* n_view, std::size_t count, const MaterialConsta
 void LightVertices(const glm::vec3* n_view, std::size_t count, const MaterialConstants& m, const ShadeConstants& k,
                    bool specular, glm::vec3* color) {
   if (!specular) return LightBlock<BrdfKind::Exact, false>(n_view, count, m, k, color);
-  switch (m.lobe.kind) {
-    case BrdfKind::Exact: return LightBlock<BrdfKind::Exact, true>(n_view, count, m, k, color);
-    case BrdfKind::CosK: return LightBlock<BrdfKind::CosK, true>(n_view, count, m, k, color);
-    case BrdfKind::Schlick: return LightBlock<BrdfKind::Schlick, true>(n_view, count, m, k, color);
-    case BrdfKind::SchlickPow2: return LightBlock<BrdfKind::SchlickPow2, true>(n_view, count, m, k, color);
-    case BrdfKind::Quadratic: return LightBlock<BrdfKind::Quadratic, true>(n_view, count, m, k, color);
-    case BrdfKind::QuadraticFit: return LightBlock<BrdfKind::QuadraticFit, true>(n_view, count, m, k, color);
-    case BrdfKind::Poly2: return LightBlock<BrdfKind::Poly2, true>(n_view, count, m, k, color);
-    case BrdfKind::Poly3: return LightBlock<BrdfKind::Poly3, true>(n_view, count, m, k, color);
-  }
+  with_brdf_kind(m.lobe.kind,
+                 [&](auto kind) { LightBlock<decltype(kind)::value, true>(n_view, count, m, k, color); });
 }
 
 }  // namespace HWY_NAMESPACE
