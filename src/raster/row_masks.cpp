@@ -2,6 +2,9 @@
 #define HWY_TARGET_INCLUDE "raster/row_masks.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
+#include <algorithm>
+#include <cstring>
+
 #include <hwy/highway.h>
 
 #include "raster/row_masks-inl.h"
@@ -15,6 +18,26 @@ int RowMasksFn(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
   return RowMasks(te, rect, bits);
 }
 
+int BoxMasksFn(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
+  const hn::ScalableTag<int32_t> di;
+  const BoxLayout layout = box_layout(rect);
+  if (layout.lanes > static_cast<int>(hn::Lanes(di))) return -1;
+  const auto box = BoxCoverage(di, te, rect, layout);
+  alignas(64) int32_t px[HWY_MAX_BYTES / 4], py[HWY_MAX_BYTES / 4];
+  hn::Store(box.px, di, px);
+  hn::Store(box.py, di, py);
+  std::fill(bits, bits + (rect.y1 - rect.y0 + 1), 0u);
+  uint8_t mask_bytes[8] = {};
+  hn::StoreMaskBits(di, box.covered, mask_bytes);
+  uint64_t lanes = 0;
+  std::memcpy(&lanes, mask_bytes, sizeof(lanes));
+  for (; lanes; lanes &= lanes - 1) {
+    const int lane = std::countr_zero(lanes);
+    bits[py[lane] - rect.y0] |= 1u << (px[lane] - rect.x0);
+  }
+  return static_cast<int>(hn::CountTrue(di, box.covered));
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace fastshade
 HWY_AFTER_NAMESPACE();
@@ -23,9 +46,14 @@ HWY_AFTER_NAMESPACE();
 namespace fastshade {
 
 HWY_EXPORT(RowMasksFn);
+HWY_EXPORT(BoxMasksFn);
 
 int row_masks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
   return HWY_DYNAMIC_DISPATCH(RowMasksFn)(te, rect, bits);
+}
+
+int box_masks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
+  return HWY_DYNAMIC_DISPATCH(BoxMasksFn)(te, rect, bits);
 }
 
 }  // namespace fastshade

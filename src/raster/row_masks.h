@@ -1,5 +1,5 @@
-// The SIMD row masks (raster/row_masks-inl.h) on the process's ISA, for tests: the kernels
-// inline the per-target version.
+// The SIMD coverage kernels (raster/row_masks-inl.h) on the process's ISA, for tests: the
+// kernels inline the per-target versions.
 #pragma once
 #include <cstdint>
 
@@ -10,5 +10,8 @@ namespace fastshade {
 // bits[r]: covered columns of row rect.y0 + r (bit k: column rect.x0 + k); returns how many
 // pixels are covered. rect must be narrower than kNarrowRectPx.
 int row_masks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits);
+// The same from BoxCoverage (one vector for the whole rectangle); -1 if the rectangle does
+// not fit the ISA's vector. The triangle must pass box_lanes_exact.
+int box_masks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits);
 
 }  // namespace fastshade

@@ -94,6 +94,15 @@ struct EdgeBound {
 // span_loop-inl.h); at 16 a row's bits fit the kernels' uint32 masks with room to spare.
 inline constexpr int kNarrowRectPx = 16;
 
+// Edge values fit int32 lanes (raster/row_masks-inl.h BoxCoverage) when the whole triangle's
+// box spans at most kBoxLanesMaxPx pixel centres each way: its vertices then lie within
+// kBoxLanesMaxPx + 1 pixels of any centre of the box, so |a|, |b| and every offset are below
+// 18 * 512 edge units and |E| <= 2 * 9216^2 ~ 1.7e8 < 2^31.
+inline constexpr int kBoxLanesMaxPx = 16;
+inline bool box_lanes_exact(const SetupTriangle& t) {
+  return t.px_max[0] - t.px_min[0] < kBoxLanesMaxPx && t.px_max[1] - t.px_min[1] < kBoxLanesMaxPx;
+}
+
 // For a rectangle narrower than kNarrowRectPx: calls row(py, bits) for every row, bit k set
 // where pixel rect.x0 + k is covered. Branch-free per pixel; a row's bits are one run since
 // triangles are convex.

@@ -128,26 +128,54 @@ HWY_INLINE void ShadeSpanWith(D d, const Barycentrics& bary, const Plane& depth_
               [&](auto dd, const auto& o, int) { return shade(dd, o); });
 }
 
-// Short spans (the many small triangles of a dense mesh) take vectors of 4 or 8 lanes: wider
-// ones would be mostly masked off and, on CPUs that split 512-bit operations, cost double.
-// The rows must have kScratchPadPx of slack past x1 (a vector may read and blend past it).
+// fn(d) with the narrowest float vector of 4, 8 or all lanes that holds n pixels: the many small
+// triangles of a dense mesh would leave wider vectors mostly masked off, and on CPUs that split
+// 512-bit operations those cost double.
+template <typename Fn>
+HWY_INLINE void WithNarrowestVector(size_t n, Fn&& fn) {
+  const hn::ScalableTag<float> d;
+  if (n <= 4 && hn::Lanes(d) > 4) {
+    fn(hn::CappedTag<float, 4>());
+  } else if (n <= 8 && hn::Lanes(d) > 8) {
+    fn(hn::CappedTag<float, 8>());
+  } else {
+    fn(d);
+  }
+}
+
+// A row span in the narrowest vectors that hold it. The rows must have kScratchPadPx of slack
+// past x1 (a vector may read and blend past it).
 template <typename ShadeFn>
 HWY_INLINE void ShadeSpan(const Barycentrics& bary, const Plane& depth_plane, int py, int x0,
                           int x1, RowTarget row, ShadeFn&& shade) {
-  const int n = x1 - x0 + 1;
-  const hn::ScalableTag<float> d;
-  if (n <= 4 && hn::Lanes(d) > 4) {
-    ShadeSpanWith(hn::CappedTag<float, 4>(), bary, depth_plane, py, x0, x1, row, shade);
-  } else if (n <= 8 && hn::Lanes(d) > 8) {
-    ShadeSpanWith(hn::CappedTag<float, 8>(), bary, depth_plane, py, x0, x1, row, shade);
-  } else {
-    ShadeSpanWith(d, bary, depth_plane, py, x0, x1, row, shade);
-  }
+  WithNarrowestVector(x1 - x0 + 1, [&](auto d) { ShadeSpanWith(d, bary, depth_plane, py, x0, x1, row, shade); });
 }
 
 inline RowTarget tile_row(const TileTarget& tt, int py) {
   return {tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin,
           tt.color + (py - tt.y_origin) * tt.stride - tt.x_origin, tt.alpha_xor};
+}
+
+inline constexpr int kMaxLanes = HWY_MAX_BYTES / sizeof(float);
+
+// Depth z and colour rgba of the lanes that passed the depth test, to tile pixels lane_at[i]
+// (a triangle's lanes hold distinct pixels, so the order of the stores does not matter).
+template <class D, class V, class VU>
+HWY_INLINE void StorePassed(D d, hn::Mask<D> pass, V z, VU rgba, const int32_t* lane_at, const TileTarget& tt) {
+  const hn::RebindToUnsigned<D> du;
+  alignas(64) float lane_z[kMaxLanes];
+  alignas(64) uint32_t lane_rgba[kMaxLanes];
+  hn::Store(z, d, lane_z);
+  hn::Store(hn::Xor(rgba, hn::Set(du, tt.alpha_xor)), du, lane_rgba);
+  uint8_t pass_bytes[8] = {};
+  hn::StoreMaskBits(d, pass, pass_bytes);
+  uint32_t passed = 0;
+  std::memcpy(&passed, pass_bytes, sizeof(passed));
+  for (; passed; passed &= passed - 1) {
+    const int lane = std::countr_zero(passed);
+    tt.depth[lane_at[lane]] = lane_z[lane];
+    tt.color[lane_at[lane]] = lane_rgba[lane];
+  }
 }
 
 // A narrow triangle's covered pixels, packed into lanes whatever their row: a 6-pixel
@@ -159,12 +187,8 @@ template <class D, typename ShadeFn>
 HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
                                 const uint32_t* row_bits, ShadeFn&& shade) {
   const hn::RebindToSigned<D> di;
-  const hn::RebindToUnsigned<D> du;
-  constexpr int kMaxLanes = HWY_MAX_BYTES / sizeof(float);
   const int lanes = static_cast<int>(hn::Lanes(d));
   alignas(64) int32_t lane_px[kMaxLanes], lane_dy[kMaxLanes], lane_at[kMaxLanes];
-  alignas(64) float lane_z[kMaxLanes];
-  alignas(64) uint32_t lane_rgba[kMaxLanes];
   tri.set_up_planes();
   const Barycentrics& bary = tri.bary;
   auto flush = [&](int n) {
@@ -175,17 +199,7 @@ HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
     const auto pass = hn::And(hn::FirstN(d, static_cast<size_t>(n)),
                               hn::Lt(z, hn::GatherIndex(d, tt.depth, hn::Load(di, lane_at))));
     if (hn::AllFalse(d, pass)) return;
-    hn::Store(z, d, lane_z);
-    hn::Store(hn::Xor(shade(d, o), hn::Set(du, tt.alpha_xor)), du, lane_rgba);
-    uint8_t pass_bytes[8] = {};
-    hn::StoreMaskBits(d, pass, pass_bytes);
-    uint32_t passed = 0;
-    std::memcpy(&passed, pass_bytes, sizeof(passed));
-    for (; passed; passed &= passed - 1) {
-      const int lane = std::countr_zero(passed);
-      tt.depth[lane_at[lane]] = lane_z[lane];
-      tt.color[lane_at[lane]] = lane_rgba[lane];
-    }
+    StorePassed(d, pass, z, shade(d, o), lane_at, tt);
   };
   const PixelRect& r = tri.rect;
   int n = 0;
@@ -227,25 +241,59 @@ HWY_INLINE bool HiddenAlready(const TriangleInTile& tri, const TileTarget& tt, c
 // boxes of 1-9 pixels, and the test stops at the first pixel that could still change.
 inline constexpr int kHiddenBoxTestPx = 16;
 
-// Narrow triangles: SIMD row masks, then the covered pixels in the narrowest vectors that hold
-// them (wide vectors mostly masked off cost double on CPUs that split 512-bit operations).
+// The covered pixels of a small box, already in the first `count` lanes (lane_px, lane_py; lane_at
+// their tile index, 0 past count): HiddenAlready on them, then planes, depth test and shading,
+// as ShadePackedWith does for a packed vector.
+template <class D, typename ShadeFn>
+HWY_INLINE void ShadeBoxLanes(D d, TriangleInTile& tri, const TileTarget& tt, const int32_t* lane_px,
+                              const int32_t* lane_py, const int32_t* lane_at, size_t count, ShadeFn&& shade) {
+  const hn::RebindToSigned<D> di;
+  const auto first = hn::FirstN(d, count);
+  const auto tile_z = hn::GatherIndex(d, tt.depth, hn::Load(di, lane_at));
+  const SetupTriangle& t = *tri.tri;
+  const float nearest = std::min({t.depth[0], t.depth[1], t.depth[2]});
+  if (hn::AllFalse(d, hn::And(first, hn::Gt(tile_z, hn::Set(d, nearest))))) return;
+  tri.set_up_planes();
+  const auto dy = hn::ConvertTo(d, hn::Sub(hn::Load(di, lane_py), hn::Set(di, tri.bary.ay)));
+  const auto o = MakeLaneOffsets(d, tri.bary, hn::Load(di, lane_px), dy);
+  const auto z = EvalPlane(d, tri.depth, o);
+  const auto pass = hn::And(first, hn::Lt(z, tile_z));
+  if (hn::AllFalse(d, pass)) return;
+  StorePassed(d, pass, z, shade(d, o), lane_at, tt);
+}
+
+// A dense mesh's small boxes (box_layout fits one vector, the triangle box_lanes_exact): the
+// whole box's coverage in one vector (BoxCoverage), the covered pixels compressed into the first
+// lanes, then shaded in the narrowest vector that holds them. No loop over rows or pixels.
+template <typename ShadeFn>
+HWY_INLINE void ShadeBox(TriangleInTile& tri, const TileTarget& tt, BoxLayout layout, ShadeFn&& shade) {
+  const hn::ScalableTag<int32_t> di;
+  const auto box = BoxCoverage(di, tri.edges, tri.rect, layout);
+  const size_t count = hn::CountTrue(di, box.covered);
+  if (count == 0) return;
+  const auto px = hn::Compress(box.px, box.covered), py = hn::Compress(box.py, box.covered);
+  const int stride_shift = std::countr_zero(static_cast<unsigned>(tt.stride));
+  const auto at = hn::Add(hn::ShiftLeftSame(hn::Sub(py, hn::Set(di, tt.y_origin)), stride_shift),
+                          hn::Sub(px, hn::Set(di, tt.x_origin)));
+  alignas(64) int32_t lane_px[kMaxLanes], lane_py[kMaxLanes], lane_at[kMaxLanes];
+  hn::Store(px, di, lane_px);
+  hn::Store(py, di, lane_py);
+  hn::Store(hn::IfThenElseZero(hn::FirstN(di, count), at), di, lane_at);  // lanes past count: a valid index
+  WithNarrowestVector(count, [&](auto d) { ShadeBoxLanes(d, tri, tt, lane_px, lane_py, lane_at, count, shade); });
+}
+
+// Narrow triangles whose box ShadeBox cannot take: SIMD row masks, then the covered pixels in
+// the narrowest vectors that hold them.
 template <typename ShadeFn>
 HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
   uint32_t row_bits[limits::kMaxTilePx];
   const int covered = RowMasks(tri.edges, tri.rect, row_bits);
   if (covered == 0 || HiddenAlready(tri, tt, row_bits)) return;
-  const hn::ScalableTag<float> d;
-  if (covered <= 4 && hn::Lanes(d) > 4) {
-    ShadePackedWith(hn::CappedTag<float, 4>(), tri, tt, row_bits, shade);
-  } else if (covered <= 8 && hn::Lanes(d) > 8) {
-    ShadePackedWith(hn::CappedTag<float, 8>(), tri, tt, row_bits, shade);
-  } else {
-    ShadePackedWith(d, tri, tt, row_bits, shade);
-  }
+  WithNarrowestVector(covered, [&](auto d) { ShadePackedWith(d, tri, tt, row_bits, shade); });
 }
 
 // Every covered pixel of the triangle in this tile (placed by place_in_tile: its edges are set
-// up here): packed lanes for narrow triangles, row spans otherwise.
+// up here): one box vector or packed lanes for narrow triangles, row spans otherwise.
 template <typename ShadeFn>
 HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
   const PixelRect& r = tri.rect;
@@ -253,7 +301,11 @@ HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn
   if (narrow && (r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt, nullptr)) return;
   tri.edges = triangle_edges(*tri.tri);
   if (narrow) {
-    ShadePacked(tri, tt, shade);
+    const BoxLayout layout = box_layout(r);
+    if (layout.lanes <= static_cast<int>(hn::Lanes(hn::ScalableTag<int32_t>())) && box_lanes_exact(*tri.tri))
+      ShadeBox(tri, tt, layout, shade);
+    else
+      ShadePacked(tri, tt, shade);
     return;
   }
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
