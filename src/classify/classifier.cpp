@@ -85,6 +85,7 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
     batch.spec_threshold = p.spec_threshold;
     batch.gouraud_budget = p.gouraud_budget;
     batch.negligible_share = kNegligible;
+    batch.shininess = t.shininess;
     batch.paper_rule = p.paper_rule;
     for (std::size_t i = 0; i < k.lights.size(); ++i) {
       const LightTerms& lt = t.lights[i];

@@ -1,9 +1,10 @@
-// The classifier's first look (classify/classifier.h: vertex terms, then the normal cone's
-// bounds) for many triangles at once, one per SIMD lane: most triangles of a mesh are settled
-// by it, and in lanes it costs a few instructions a triangle instead of several hundred.
-// Lanes it cannot settle are left to Classifier::classify(), which is also the scalar
-// reference: a lane settled here gets exactly the path (and reported light) classify() would
-// choose (the same double operations in the same order, so the same bits).
+// The classifier (classify/classifier.h: vertex terms, the normal cone's cheap bounds, then the
+// exact ones) for many triangles at once, one per SIMD lane: in lanes it costs tens of
+// instructions a triangle instead of several hundred. Classifier::classify() is the scalar
+// reference: a lane settled here gets exactly the path (and reported lights) classify() would
+// choose (the same double operations in the same order, so the same bits; std::pow itself is
+// called per lane). Lanes are left to classify() only for materials lit by more than 32 lights
+// (those get the cheap bounds in lanes alone).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +24,7 @@ struct ConeBatchTerms {
   std::vector<ConeLight> lights;
   double spec_threshold = 0, gouraud_budget = 0;
   double negligible_share = 0;  // the classifier's kNegligible
+  double shininess = 1;
   bool paper_rule = false;
 };
 
@@ -32,12 +34,10 @@ struct NormalsSoA {
   const double* n[9];
 };
 
-// What the lanes settled, per triangle: path[i] is Specular where a vertex's own term reaches
-// the threshold (light[i]: the first such light, 63 standing for 63 and up, as classify()
-// reports it), GouraudDiffuse where the cone bounds settle it, Unclassified where they cannot
-// (highlight possible, bounds too loose, degenerate cone). Runs on the process's ISA
-// (exec/isa.h).
+// What the lanes settled, per triangle: path[i] as classify() decides it (lights[i]: its
+// lights_with_highlight where Specular), Unclassified where only classify() can. Runs on the
+// process's ISA (exec/isa.h).
 void decide_paths_batch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
-                        ShadePath* path, uint8_t* light);
+                        ShadePath* path, uint64_t* lights);
 
 }  // namespace fastshade

@@ -25,19 +25,19 @@ class ChunkBuilder {
       : p_(p), attrs_(attrs), chunk_(chunk) {}
 
   // The input triangle the next emits come from (its pieces after clipping share its path).
-  void begin_source(const uint32_t* idx, uint16_t material, ShadePath planned, uint8_t planned_light) {
+  void begin_source(const uint32_t* idx, uint16_t material, ShadePath planned, uint64_t planned_lights) {
     source_ = idx;
     material_ = material;
     planned_ = planned;
-    planned_light_ = planned_light;
+    planned_lights_ = planned_lights;
     path_[0] = path_[1] = ShadePath::Unclassified;
   }
 
-  // Decides in SIMD lanes what vertex terms and cone bounds settle for source triangles
-  // [first, last) (classify/cone_batch.h): planned[t - first] (and for Specular the light
-  // reported), Unclassified where classify() must look.
+  // Decides in SIMD lanes the paths of source triangles [first, last) (classify/
+  // cone_batch.h): planned[t - first] (and for Specular the lights reported), Unclassified
+  // where classify() must look.
   void plan_paths(const SceneGeometry& g, uint32_t first, uint32_t last, ShadePath* planned,
-                  uint8_t* planned_light) const {
+                  uint64_t* planned_lights) const {
     std::fill(planned, planned + (last - first), ShadePath::Unclassified);
     if (!p_.classifier) return;
     alignas(64) double normals[9][kPlanBlock];
@@ -53,7 +53,7 @@ class ChunkBuilder {
             const glm::vec3& n = attrs_.n_view[g.triangles[t][v]];
             for (int c = 0; c < 3; ++c) normals[3 * v + c][t - run] = n[c];
           }
-        decide_paths_batch(*terms, soa, end - run, planned + (run - first), planned_light + (run - first));
+        decide_paths_batch(*terms, soa, end - run, planned + (run - first), planned_lights + (run - first));
       }
       run = end;
     }
@@ -121,7 +121,7 @@ class ChunkBuilder {
     if (cached != ShadePath::Unclassified) return cached;
     if (planned_ != ShadePath::Unclassified) {  // settled in lanes
       ++chunk_.paths.triangles[static_cast<int>(planned_)];
-      if (planned_ == ShadePath::Specular) chunk_.paths.lights_with_highlight |= uint64_t(1) << planned_light_;
+      if (planned_ == ShadePath::Specular) chunk_.paths.lights_with_highlight |= planned_lights_;
       return cached = planned_;
     }
     const ShadeConstants& k = p_.classifier->shade();
@@ -201,7 +201,7 @@ class ChunkBuilder {
   const uint32_t* source_ = nullptr;
   uint16_t material_ = 0;
   ShadePath planned_ = ShadePath::Unclassified;
-  uint8_t planned_light_ = 0;
+  uint64_t planned_lights_ = 0;
   ShadePath path_[2] = {};  // per facing: front, back
 };
 
@@ -219,10 +219,10 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   const uint8_t* flags = pv.flags.data();
   const ScreenVertex* screen = pv.screen.data();
   ShadePath planned[ChunkBuilder::kPlanBlock];
-  uint8_t planned_light[ChunkBuilder::kPlanBlock];
+  uint64_t planned_lights[ChunkBuilder::kPlanBlock];
   for (uint32_t t = first; t < last; ++t) {
     if ((t - first) % ChunkBuilder::kPlanBlock == 0)
-      builder.plan_paths(g, t, std::min(t + ChunkBuilder::kPlanBlock, last), planned, planned_light);
+      builder.plan_paths(g, t, std::min(t + ChunkBuilder::kPlanBlock, last), planned, planned_lights);
     // The vertices of a dense mesh's triangle sit wherever the mesh put them: fetch those of
     // the triangle kAhead on (measured on dragon_871k: front end 12.6 -> 11.9 ms).
     constexpr uint32_t kAhead = 8;
@@ -242,7 +242,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
       continue;
     }
     const uint32_t slot = (t - first) % ChunkBuilder::kPlanBlock;
-    builder.begin_source(idx.data(), g.triangle_material[t], planned[slot], planned_light[slot]);
+    builder.begin_source(idx.data(), g.triangle_material[t], planned[slot], planned_lights[slot]);
     if (!((f0 | f1 | f2) & kNeedsClip))
       builder.emit(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2],
                    g.triangle_material[t]);

@@ -1,7 +1,7 @@
-// The lanes' first look (classify/cone_batch.h) against its scalar reference, the whole
-// classifier: on every compiled ISA and batch length 0..2W+1 and beyond, a triangle settled in
-// lanes gets the path (and reported light) classify() gives it, and the lanes settle most of
-// the triangles that classify() sends to Gouraud.
+// The classifier in lanes (classify/cone_batch.h) against its scalar reference, classify():
+// on every compiled ISA and batch length 0..2W+1 and beyond, every triangle gets the path (and
+// reported lights) classify() gives it; with more lights than the lanes' exact bounds take, a
+// triangle the cheap look settles gets classify()'s path too.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,7 +40,7 @@ ShadeConstants scene(int lights, float shininess, float ks) {
   const glm::vec3 dirs[] = {glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(-1, 0.2f, 0.3f)),
                             glm::vec3(0, 0, 1)};
   for (int i = 0; i < lights; ++i)
-    k.lights.push_back({dirs[i], glm::normalize(dirs[i] + glm::vec3(0, 0, 1)), glm::vec3(1.2f / float(lights))});
+    k.lights.push_back({dirs[i % 3], glm::normalize(dirs[i % 3] + glm::vec3(0, 0, 1)), glm::vec3(1.2f / float(lights))});
   MaterialConstants m{};
   m.kd = glm::vec3(0.7f), m.ks = glm::vec3(ks), m.shininess = shininess, m.shininess_d = shininess;
   k.materials = {m};
@@ -60,7 +60,8 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
                               {2, 100, 0.3f, {1.0 / 510.0, 2.0 / 255.0, false}},
                               {3, 10, 0.5f, {1.0 / 255.0, 4.0 / 255.0, false}},
                               {1, 1000, 1.0f, {1.0 / 510.0, 1.0 / 255.0, true}},
-                              {1, 5, 0.0f, {1.0 / 510.0, 0.5 / 255.0, false}}};
+                              {1, 5, 0.0f, {1.0 / 510.0, 0.5 / 255.0, false}},
+                              {33, 20, 0.5f, {1.0 / 510.0, 2.0 / 255.0, false}}};
   int isas = 0;
   for (const std::string& isa : available_isas()) {
     select_isa(isa);
@@ -82,20 +83,20 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
         for (std::size_t t = 0; t < count; ++t)
           for (int v = 0; v < 3; ++v)
             for (int c = 0; c < 3; ++c) soa[(3 * v + c) * count + t] = normals[3 * t + v][c];
-        std::vector<ShadePath> path(count + 1, ShadePath::PixelDiffuse);  // a sentinel past the end
-        std::vector<uint8_t> light(count + 1, 99);
+        std::vector<ShadePath> path(count + 1, ShadePath::Unclassified);  // a sentinel past the end
+        std::vector<uint64_t> light(count + 1, 99);
         decide_paths_batch(*terms, view, count, path.data(), light.data());
-        ASSERT_EQ(path[count], ShadePath::PixelDiffuse) << isa << ": wrote past the batch";
+        ASSERT_EQ(path[count], ShadePath::Unclassified) << isa << ": wrote past the batch";
         ASSERT_EQ(light[count], 99) << isa << ": wrote past the batch";
         for (std::size_t t = 0; t < count; ++t) {
           ClassifyInput in;
           for (int v = 0; v < 3; ++v) in.n[v] = dvec3(normals[3 * t + v]);
           const Classification expected = classifier.classify(in, 0);
-          ASSERT_NE(path[t], ShadePath::PixelDiffuse) << isa << ": the lanes never settle per-pixel diffuse";
+          if (s.lights <= 32) ASSERT_NE(path[t], ShadePath::Unclassified) << isa << ": the lanes settle every triangle";
           if (path[t] != ShadePath::Unclassified)
             ASSERT_EQ(expected.path, path[t]) << isa << " triangle " << t << " of " << count;
           if (path[t] == ShadePath::Specular)
-            ASSERT_EQ(expected.lights_with_highlight, uint64_t(1) << light[t]) << isa << " triangle " << t;
+            ASSERT_EQ(expected.lights_with_highlight, light[t]) << isa << " triangle " << t;
           if (count == lengths.back()) {
             settled += path[t] == ShadePath::GouraudDiffuse;
             gouraud += expected.path == ShadePath::GouraudDiffuse;
@@ -103,8 +104,8 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
           }
         }
       }
-      // The exact bounds send some triangles to Gouraud that the cone cannot; most go on the
-      // cone alone, or the lanes would save nothing.
+      // With the cheap look alone (33 lights) most Gouraud triangles must still be settled, or
+      // the lanes would save nothing there.
       EXPECT_GT(gouraud, 100) << isa << ": the cases must reach Gouraud to test anything";
       EXPECT_GE(settled, gouraud * 6 / 10) << isa << " settled " << settled << " of " << gouraud;
       if (s.ks > 0.0f) EXPECT_GT(specular, 0) << isa << ": vertex highlights must be settled too";
