@@ -64,9 +64,9 @@ inline constexpr double kFloatSpecularBudgetLsb = 0.5;
 // frame with 16 px tiles (8160 tiles) still makes 32 blocks for the workers.
 inline constexpr int kBinPlanTiles = 256;
 
-// Vertex stage: vertices per parallel block (TBB's grain). A vertex costs ~15 ns (phong,
-// measured), so a block is ~60 us: far above the cost of handing it out, and a 35k-vertex
-// mesh still makes 9 blocks.
+// Vertex stage: vertices per parallel block (TBB's grain). A vertex costs ~5-15 ns (transform
+// in lanes, plus lighting for gouraud; dragon_871k, measured), so a block is 20-60 us: far
+// above the cost of handing it out, and a 35k-vertex mesh still makes 9 blocks.
 inline constexpr int kVerticesPerBlock = 4096;
 // Vertices lit together in SIMD lanes (shade/vertex_light.h): their normals and positions wait
 // in two local arrays of this many (6 KB, in L1), and the call and its tail cost are spread

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/limits.h"
+#include "front/vertex_transform.h"
 #include "shade/vertex_light.h"
 
 namespace fastshade {
@@ -98,29 +99,27 @@ int run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const View
       ++culled;
       continue;
     }
-    const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(model_view));
-    const glm::mat4 proj = xf.proj;
+    VertexTransform transform;
+    transform.model_view = model_view;
+    transform.proj = xf.proj;
+    transform.normal_matrix = glm::inverseTranspose(glm::mat3(model_view));
+    transform.viewport = vp;
+    const bool lanes_need_normals = needs.normal || needs.color || needs.position;
     const MaterialConstants& material = shade.materials[o.material];
     tbb::parallel_for(
         tbb::blocked_range<uint32_t>(o.first_vertex, o.first_vertex + o.vertex_count,
                                       limits::kVerticesPerBlock),
         [&](const tbb::blocked_range<uint32_t>& r) {
-          // Lighting runs over batches of transformed vertices, in SIMD lanes; a batch's
+          // Batches of transformed vertices, then their lighting, both in SIMD lanes; a batch's
           // normals and positions wait in local arrays even where the method keeps neither.
           constexpr uint32_t kBatch = limits::kVertexLightBatch;
           glm::vec3 n_batch[kBatch], pos_batch[kBatch];
           for (uint32_t first = r.begin(); first < r.end(); first += kBatch) {
             const uint32_t count = std::min(kBatch, r.end() - first);
-            for (uint32_t j = 0; j < count; ++j) {
-              const uint32_t i = first + j;
-              const glm::vec4 pos_view = model_view * glm::vec4(g.positions[i], 1.0f);
-              out.store(i, proj * pos_view, vp);
-              if (!(needs.normal || needs.color || needs.position)) continue;
-              n_batch[j] = glm::normalize(normal_matrix * g.normals[i]);
-              pos_batch[j] = glm::vec3(pos_view);
-              if (needs.normal) attrs.n_view[i] = n_batch[j];
-              if (needs.position) attrs.pos_view[i] = pos_batch[j];
-            }
+            transform_vertices(transform, &g.positions[first], lanes_need_normals ? &g.normals[first] : nullptr, count,
+                               {&out.clip[first], &out.screen[first], &out.flags[first], n_batch, pos_batch});
+            if (needs.normal) std::copy_n(n_batch, count, &attrs.n_view[first]);
+            if (needs.position) std::copy_n(pos_batch, count, &attrs.pos_view[first]);
             if (needs.color)
               light_vertices(n_batch, pos_batch, count, material, shade, !needs.diffuse_color,
                              attrs.color.data() + first);

@@ -35,11 +35,6 @@ struct ProjectedVertices {
     screen.resize(n);
     flags.resize(n);
   }
-  void store(std::size_t i, const glm::vec4& pos_clip, const Viewport& vp) {
-    clip[i] = pos_clip;
-    flags[i] = vertex_flags(pos_clip, vp);
-    if (!(flags[i] & (kNeedsClip | kNonFinite))) screen[i] = project(pos_clip, vp);
-  }
 };
 
 // Parallel over vertices. Outputs are resized; their capacity is reused across frames. An

@@ -48,7 +48,12 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
   ProjectedVertices vertices;
   vertices.resize(g.positions.size());
   for (std::size_t n = 0; n < tris.size(); ++n)
-    for (int i = 0; i < 3; ++i) vertices.store(n * 3 + i, tris[n][i], viewport);
+    for (int i = 0; i < 3; ++i) {  // given clip positions: the vertex stage's flags and snapping
+      const std::size_t v = n * 3 + i;
+      vertices.clip[v] = tris[n][i];
+      vertices.flags[v] = vertex_flags(tris[n][i], viewport);
+      if (!(vertices.flags[v] & (kNeedsClip | kNonFinite))) vertices.screen[v] = project(tris[n][i], viewport);
+    }
 
   Frame frame;
   frame.grid.width = width;
