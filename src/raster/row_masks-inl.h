@@ -75,27 +75,34 @@ HWY_INLINE BoxLayout box_layout(const PixelRect& rect) {
 
 template <class DI>
 struct BoxLanes {
-  hn::Vec<DI> px, py;        // the lanes' pixels
-  hn::Mask<DI> covered;      // inside the rectangle and the triangle
+  hn::Vec<DI> col, row;  // offsets from the rectangle's first pixel
+  hn::Mask<DI> inside;   // the lane is a pixel of the rectangle
 };
 
-// Coverage of `rect` (box_layout(rect).lanes <= Lanes(di); the triangle box_lanes_exact(), so
-// its edge values fit int32 lanes) in one vector: the same pixels as for_each_row_mask.
+// The lanes' pixels of `rect` (box_layout(rect).lanes <= Lanes(di)).
 template <class DI>
-HWY_INLINE BoxLanes<DI> BoxCoverage(DI di, const TriangleEdges& te, const PixelRect& rect, BoxLayout layout) {
+HWY_INLINE BoxLanes<DI> BoxPixels(DI di, const PixelRect& rect, BoxLayout layout) {
   const auto lane = hn::Iota(di, 0);
   const auto col = hn::And(lane, hn::Set(di, (1 << layout.pitch_shift) - 1));
   const auto row = hn::ShiftRightSame(lane, layout.pitch_shift);
-  auto covered = hn::And(hn::Lt(col, hn::Set(di, rect.x1 - rect.x0 + 1)), hn::Lt(row, hn::Set(di, rect.y1 - rect.y0 + 1)));
+  return {col, row,
+          hn::And(hn::Lt(col, hn::Set(di, rect.x1 - rect.x0 + 1)), hn::Lt(row, hn::Set(di, rect.y1 - rect.y0 + 1)))};
+}
+
+// The lanes of `box` whose pixel centre the triangle covers (the triangle box_lanes_exact(), so
+// its edge values fit int32 lanes): the same pixels as for_each_row_mask.
+template <class DI>
+HWY_INLINE hn::Mask<DI> BoxCovered(DI di, const TriangleEdges& te, const PixelRect& rect, const BoxLanes<DI>& box) {
+  auto covered = box.inside;
   for (const Edge& e : te.e) {
     // The rectangle's first centre lies in the triangle's box, so its value fits int32 too.
     const auto at_origin = static_cast<int32_t>(e.at(pixel_centre_fx(rect.x0), pixel_centre_fx(rect.y0)));
-    const auto value = hn::Add(hn::Add(hn::Set(di, at_origin), hn::Mul(col, hn::Set(di, static_cast<int32_t>(e.a * kEdgeUnitsPerPixel)))),
-                               hn::Mul(row, hn::Set(di, static_cast<int32_t>(e.b * kEdgeUnitsPerPixel))));
+    const auto value = hn::Add(hn::Add(hn::Set(di, at_origin), hn::Mul(box.col, hn::Set(di, static_cast<int32_t>(e.a * kEdgeUnitsPerPixel)))),
+                               hn::Mul(box.row, hn::Set(di, static_cast<int32_t>(e.b * kEdgeUnitsPerPixel))));
     // E >= threshold as E > threshold - 1: int32 lanes have no >= before Highway 1.1.
     covered = hn::And(covered, hn::Gt(value, hn::Set(di, static_cast<int32_t>(e.threshold - 1))));
   }
-  return {hn::Add(col, hn::Set(di, rect.x0)), hn::Add(row, hn::Set(di, rect.y0)), covered};
+  return covered;
 }
 
 }  // namespace HWY_NAMESPACE

@@ -22,20 +22,21 @@ int BoxMasksFn(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
   const hn::ScalableTag<int32_t> di;
   const BoxLayout layout = box_layout(rect);
   if (layout.lanes > static_cast<int>(hn::Lanes(di))) return -1;
-  const auto box = BoxCoverage(di, te, rect, layout);
-  alignas(64) int32_t px[HWY_MAX_BYTES / 4], py[HWY_MAX_BYTES / 4];
-  hn::Store(box.px, di, px);
-  hn::Store(box.py, di, py);
+  const auto box = BoxPixels(di, rect, layout);
+  const auto covered = BoxCovered(di, te, rect, box);
+  alignas(64) int32_t col[HWY_MAX_BYTES / 4], row[HWY_MAX_BYTES / 4];
+  hn::Store(box.col, di, col);
+  hn::Store(box.row, di, row);
   std::fill(bits, bits + (rect.y1 - rect.y0 + 1), 0u);
   uint8_t mask_bytes[8] = {};
-  hn::StoreMaskBits(di, box.covered, mask_bytes);
+  hn::StoreMaskBits(di, covered, mask_bytes);
   uint64_t lanes = 0;
   std::memcpy(&lanes, mask_bytes, sizeof(lanes));
   for (; lanes; lanes &= lanes - 1) {
     const int lane = std::countr_zero(lanes);
-    bits[py[lane] - rect.y0] |= 1u << (px[lane] - rect.x0);
+    bits[row[lane]] |= 1u << col[lane];
   }
-  return static_cast<int>(hn::CountTrue(di, box.covered));
+  return static_cast<int>(hn::CountTrue(di, covered));
 }
 
 }  // namespace HWY_NAMESPACE

@@ -94,7 +94,7 @@ struct EdgeBound {
 // span_loop-inl.h); at 16 a row's bits fit the kernels' uint32 masks with room to spare.
 inline constexpr int kNarrowRectPx = 16;
 
-// Edge values fit int32 lanes (raster/row_masks-inl.h BoxCoverage) when the whole triangle's
+// Edge values fit int32 lanes (raster/row_masks-inl.h BoxCovered) when the whole triangle's
 // box spans at most kBoxLanesMaxPx pixel centres each way: its vertices then lie within
 // kBoxLanesMaxPx + 1 pixels of any centre of the box, so |a|, |b| and every offset are below
 // 18 * 512 edge units and |E| <= 2 * 9216^2 ~ 1.7e8 < 2^31.

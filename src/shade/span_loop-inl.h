@@ -241,45 +241,52 @@ HWY_INLINE bool HiddenAlready(const TriangleInTile& tri, const TileTarget& tt, c
 // boxes of 1-9 pixels, and the test stops at the first pixel that could still change.
 inline constexpr int kHiddenBoxTestPx = 16;
 
-// The covered pixels of a small box, already in the first `count` lanes (lane_px, lane_py; lane_at
-// their tile index, 0 past count): HiddenAlready on them, then planes, depth test and shading,
-// as ShadePackedWith does for a packed vector.
+// The covered pixels of a small box, already in the first `count` lanes (lane_px, lane_py;
+// lane_at their tile index and lane_z its depth, 0 past count): planes, depth test and
+// shading, as ShadePackedWith does for a packed vector.
 template <class D, typename ShadeFn>
 HWY_INLINE void ShadeBoxLanes(D d, TriangleInTile& tri, const TileTarget& tt, const int32_t* lane_px,
-                              const int32_t* lane_py, const int32_t* lane_at, size_t count, ShadeFn&& shade) {
+                              const int32_t* lane_py, const int32_t* lane_at, const float* lane_z, size_t count,
+                              ShadeFn&& shade) {
   const hn::RebindToSigned<D> di;
-  const auto first = hn::FirstN(d, count);
-  const auto tile_z = hn::GatherIndex(d, tt.depth, hn::Load(di, lane_at));
-  const SetupTriangle& t = *tri.tri;
-  const float nearest = std::min({t.depth[0], t.depth[1], t.depth[2]});
-  if (hn::AllFalse(d, hn::And(first, hn::Gt(tile_z, hn::Set(d, nearest))))) return;
   tri.set_up_planes();
   const auto dy = hn::ConvertTo(d, hn::Sub(hn::Load(di, lane_py), hn::Set(di, tri.bary.ay)));
   const auto o = MakeLaneOffsets(d, tri.bary, hn::Load(di, lane_px), dy);
   const auto z = EvalPlane(d, tri.depth, o);
-  const auto pass = hn::And(first, hn::Lt(z, tile_z));
+  const auto pass = hn::And(hn::FirstN(d, count), hn::Lt(z, hn::Load(d, lane_z)));
   if (hn::AllFalse(d, pass)) return;
   StorePassed(d, pass, z, shade(d, o), lane_at, tt);
 }
 
-// A dense mesh's small boxes (box_layout fits one vector, the triangle box_lanes_exact): the
-// whole box's coverage in one vector (BoxCoverage), the covered pixels compressed into the first
-// lanes, then shaded in the narrowest vector that holds them. No loop over rows or pixels.
-template <typename ShadeFn>
-HWY_INLINE void ShadeBox(TriangleInTile& tri, const TileTarget& tt, BoxLayout layout, ShadeFn&& shade) {
-  const hn::ScalableTag<int32_t> di;
-  const auto box = BoxCoverage(di, tri.edges, tri.rect, layout);
-  const size_t count = hn::CountTrue(di, box.covered);
-  if (count == 0) return;
-  const auto px = hn::Compress(box.px, box.covered), py = hn::Compress(box.py, box.covered);
+// A dense mesh's small boxes (box_layout fits a vector, the triangle box_lanes_exact), in
+// vectors of d's width: the box's tile depths in one gather, HiddenAlready on the whole box
+// before the edges are set up, coverage in one vector (BoxCovered), HiddenAlready on the covered
+// pixels, then those compressed into the first lanes and shaded in the narrowest vector that
+// holds them. No loop over rows or pixels.
+template <class D, typename ShadeFn>
+HWY_INLINE void ShadeBox(D d, TriangleInTile& tri, const TileTarget& tt, BoxLayout layout, ShadeFn&& shade) {
+  const hn::RebindToSigned<D> di;
+  const PixelRect& r = tri.rect;
+  const auto box = BoxPixels(di, r, layout);
   const int stride_shift = std::countr_zero(static_cast<unsigned>(tt.stride));
-  const auto at = hn::Add(hn::ShiftLeftSame(hn::Sub(py, hn::Set(di, tt.y_origin)), stride_shift),
-                          hn::Sub(px, hn::Set(di, tt.x_origin)));
+  const auto at = hn::IfThenElseZero(  // lanes outside the box: a valid index
+      box.inside, hn::Add(hn::ShiftLeftSame(hn::Add(box.row, hn::Set(di, r.y0 - tt.y_origin)), stride_shift),
+                          hn::Add(box.col, hn::Set(di, r.x0 - tt.x_origin))));
+  const auto tile_z = hn::GatherIndex(d, tt.depth, at);
+  const SetupTriangle& t = *tri.tri;
+  const auto nearer = hn::RebindMask(di, hn::Gt(tile_z, hn::Set(d, std::min({t.depth[0], t.depth[1], t.depth[2]}))));
+  if (hn::AllFalse(di, hn::And(box.inside, nearer))) return;
+  tri.edges = triangle_edges(t);
+  const auto covered = BoxCovered(di, tri.edges, r, box);
+  if (hn::AllFalse(di, hn::And(covered, nearer))) return;
+  const size_t count = hn::CountTrue(di, covered);
   alignas(64) int32_t lane_px[kMaxLanes], lane_py[kMaxLanes], lane_at[kMaxLanes];
-  hn::Store(px, di, lane_px);
-  hn::Store(py, di, lane_py);
-  hn::Store(hn::IfThenElseZero(hn::FirstN(di, count), at), di, lane_at);  // lanes past count: a valid index
-  WithNarrowestVector(count, [&](auto d) { ShadeBoxLanes(d, tri, tt, lane_px, lane_py, lane_at, count, shade); });
+  alignas(64) float lane_z[kMaxLanes];
+  hn::Store(hn::Compress(hn::Add(box.col, hn::Set(di, r.x0)), covered), di, lane_px);
+  hn::Store(hn::Compress(hn::Add(box.row, hn::Set(di, r.y0)), covered), di, lane_py);
+  hn::Store(hn::IfThenElseZero(hn::FirstN(di, count), hn::Compress(at, covered)), di, lane_at);
+  hn::Store(hn::Compress(tile_z, hn::RebindMask(d, covered)), d, lane_z);
+  WithNarrowestVector(count, [&](auto dc) { ShadeBoxLanes(dc, tri, tt, lane_px, lane_py, lane_at, lane_z, count, shade); });
 }
 
 // Narrow triangles whose box ShadeBox cannot take: SIMD row masks, then the covered pixels in
@@ -297,17 +304,18 @@ HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&&
 template <typename ShadeFn>
 HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
   const PixelRect& r = tri.rect;
-  const bool narrow = r.x1 - r.x0 < kNarrowRectPx;
-  if (narrow && (r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt, nullptr)) return;
-  tri.edges = triangle_edges(*tri.tri);
-  if (narrow) {
+  if (r.x1 - r.x0 < kNarrowRectPx) {
     const BoxLayout layout = box_layout(r);
-    if (layout.lanes <= static_cast<int>(hn::Lanes(hn::ScalableTag<int32_t>())) && box_lanes_exact(*tri.tri))
-      ShadeBox(tri, tt, layout, shade);
-    else
-      ShadePacked(tri, tt, shade);
+    if (layout.lanes <= static_cast<int>(hn::Lanes(hn::ScalableTag<int32_t>())) && box_lanes_exact(*tri.tri)) {
+      WithNarrowestVector(layout.lanes, [&](auto d) { ShadeBox(d, tri, tt, layout, shade); });
+      return;
+    }
+    if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt, nullptr)) return;
+    tri.edges = triangle_edges(*tri.tri);
+    ShadePacked(tri, tt, shade);
     return;
   }
+  tri.edges = triangle_edges(*tri.tri);
   for_each_span(tri.edges, tri.rect, [&](int py, int x0, int x1) {
     tri.set_up_planes();
     ShadeSpan(tri.bary, tri.depth, py, x0, x1, tile_row(tt, py), shade);

@@ -74,7 +74,7 @@ PixelRect centre_box(const int64_t x[3], const int64_t y[3]) {
           last(std::max({x[0], x[1], x[2]})), last(std::max({y[0], y[1], y[2]}))};
 }
 
-// BoxCoverage's int32 lanes against the scalar masks, on every ISA: triangles whose box spans
+// BoxCovered's int32 lanes against the scalar masks, on every ISA: triangles whose box spans
 // up to kBoxLanesMaxPx centres each way (the largest edge values it promises to hold), every
 // sub-rectangle shape that fits the ISA's vector.
 TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
