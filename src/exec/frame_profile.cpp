@@ -13,7 +13,6 @@ void FrameProfile::reset(std::size_t chunks, std::size_t tiles, std::size_t vert
   stages = {};
   vertices = vertex_count;
   setup_chunk_ns.assign(chunks, 0);
-  count_chunk_ns.assign(chunks, 0);
   fill_chunk_ns.assign(chunks, 0);
   tile_ns.assign(tiles, 0);
 }
@@ -58,7 +57,7 @@ constexpr StageAccount kStageAccounts[] = {
      [](const FrameProfile& f) { return double(f.vertex_stage_ns) + sum_ns(f.setup_chunk_ns); }},
     {"binning", &StageTimes::binning,
      [](const FrameProfile& f) {
-       return sum_ns(f.count_chunk_ns) + double(f.plan_bins_ns) + sum_ns(f.fill_chunk_ns);
+       return double(f.plan_bins_ns) + sum_ns(f.fill_chunk_ns);
      }},
     {"raster_shade", &StageTimes::raster_shade, [](const FrameProfile& f) { return sum_ns(f.tile_ns); }},
 };
@@ -83,7 +82,6 @@ std::vector<SchedulePhase> schedule_phases(std::span<const FrameProfile> frames,
                     evenly(median_over(frames, [](const FrameProfile& f) { return f.vertex_stage_ns; }), vertex_blocks),
                     true});
   phases.push_back({"front_end", "setup chunks", item_medians(frames, &FrameProfile::setup_chunk_ns)});
-  phases.push_back({"binning", "count chunks", item_medians(frames, &FrameProfile::count_chunk_ns)});
   phases.push_back({"binning", "bin plan",
                     evenly(median_over(frames, [](const FrameProfile& f) { return f.plan_bins_ns; }), plan_blocks),
                     true});

@@ -15,8 +15,7 @@ namespace fastshade {
 struct FrameProfile {
   uint64_t vertex_stage_ns = 0;          // the whole vertex stage (its blocks cost alike)
   std::size_t vertices = 0;              // ... over this many vertices
-  std::vector<uint64_t> setup_chunk_ns;  // triangle setup, per front-end chunk
-  std::vector<uint64_t> count_chunk_ns;  // binning's count pass, per chunk
+  std::vector<uint64_t> setup_chunk_ns;  // triangle setup and its count into tiles, per chunk
   uint64_t plan_bins_ns = 0;             // binning's plan (its blocks cost alike)
   std::vector<uint64_t> fill_chunk_ns;   // binning's fill pass, per chunk
   std::vector<uint64_t> tile_ns;         // raster+shade, per tile in tile order, empty ones too

@@ -170,19 +170,18 @@ struct Renderer::Impl {
         objects_culled = run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
       }
       const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());
+      // Each chunk is counted into its tiles right after its setup, while its records are in
+      // cache: the count belongs to the front end's time, binning is the plan and the fill.
       tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
         ItemTimer timer(profile_slot(profile, &FrameProfile::setup_chunk_ns, c));
         const uint32_t first = static_cast<uint32_t>(c * limits::kTrianglesPerChunk);
         const uint32_t last = std::min<uint32_t>(first + limits::kTrianglesPerChunk, n_tris);
         setup_chunk(geometry, vertices, frame.attrs, first, last, setup, frame.chunks[c]);
+        count_chunk_bins(frame.grid, classified, frame.chunks[c]);
       });
       t.front_end = ms_since(t0);
 
       const auto t1 = Clock::now();
-      tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
-        ItemTimer timer(profile_slot(profile, &FrameProfile::count_chunk_ns, c));
-        count_chunk_bins(frame.grid, classified, frame.chunks[c]);
-      });
       {
         ItemTimer timer(profile ? &profile->plan_bins_ns : nullptr);
         plan_bins(frame);

@@ -34,21 +34,21 @@ void for_each_tile(const TileGrid& grid, const SetupTriangle& t, Visit&& visit) 
 
 void count_chunk_bins(const TileGrid& grid, bool classified, Chunk& chunk) {
   chunk.tile_counts.assign(grid.tile_count(), 0);
+  chunk.only_tile.resize(chunk.triangles.size());
   uint32_t* counts = chunk.tile_counts.data();
-  if (!classified) {
-    chunk.tile_paths.clear();
-    for (const SetupTriangle& t : chunk.triangles)
-      for_each_tile(grid, t, [&](int tile) { ++counts[tile]; });
-    return;
-  }
-  chunk.tile_paths.assign(grid.tile_count(), 0);
+  chunk.tile_paths.assign(classified ? grid.tile_count() : 0, 0);
   uint8_t* paths = chunk.tile_paths.data();
-  for (const SetupTriangle& t : chunk.triangles) {
-    const uint8_t bit = uint8_t(1u << static_cast<int>(Frame::path_of(t)));
+  for (uint32_t i = 0; i < chunk.triangles.size(); ++i) {
+    const SetupTriangle& t = chunk.triangles[i];
+    const uint8_t bit = classified ? uint8_t(1u << static_cast<int>(Frame::path_of(t))) : 0;
+    int tiles = 0, last = 0;
     for_each_tile(grid, t, [&](int tile) {
       ++counts[tile];
-      paths[tile] |= bit;
+      if (classified) paths[tile] |= bit;
+      ++tiles;
+      last = tile;
     });
+    chunk.only_tile[i] = tiles == 1 ? static_cast<uint32_t>(last) : kSeveralTiles;
   }
 }
 
@@ -90,7 +90,9 @@ void fill_chunk_bins(Frame& frame, uint32_t chunk_index) {
   uint32_t* entries = frame.bin_entries.data();
   for (uint32_t i = 0; i < chunk.triangles.size(); ++i) {
     const uint32_t entry = bin_entry(chunk_index, i);
-    for_each_tile(frame.grid, chunk.triangles[i], [&](int tile) { entries[cursor[tile]++] = entry; });
+    const uint32_t only = chunk.only_tile[i];  // most triangles: no need to read the record again
+    if (only != kSeveralTiles) entries[cursor[only]++] = entry;
+    else for_each_tile(frame.grid, chunk.triangles[i], [&](int tile) { entries[cursor[tile]++] = entry; });
   }
 }
 
