@@ -61,16 +61,16 @@ HWY_INLINE int RowMasks(const TriangleEdges& te, const PixelRect& rect, uint32_t
   return covered;
 }
 
-// A small rectangle's pixels in one vector of int32 lanes, row after row: lane i is column
-// i & (pitch - 1), row i >> log2(pitch), pitch = bit_ceil(width). A dense mesh's boxes are
-// 1-16 pixels, and one vector settles their coverage without a loop over rows.
+// A small rectangle's pixels in one vector of int32 lanes, row after row, width lanes per row
+// (raster/spans.h kBoxLaneOffsets). A dense mesh's boxes are 1-16 pixels, and one vector settles
+// their coverage without a loop over rows.
 struct BoxLayout {
-  int pitch_shift;  // log2 of the lanes per box row
-  int lanes;        // lanes the box takes: pitch * rows
+  int width;  // pixels per row, 1..kNarrowRectPx
+  int lanes;  // lanes the box takes: width * rows
 };
 HWY_INLINE BoxLayout box_layout(const PixelRect& rect) {
-  const int pitch_shift = std::bit_width(static_cast<unsigned>(rect.x1 - rect.x0));
-  return {pitch_shift, (rect.y1 - rect.y0 + 1) << pitch_shift};
+  const int width = rect.x1 - rect.x0 + 1;
+  return {width, (rect.y1 - rect.y0 + 1) * width};
 }
 
 template <class DI>
@@ -79,14 +79,12 @@ struct BoxLanes {
   hn::Mask<DI> inside;   // the lane is a pixel of the rectangle
 };
 
-// The lanes' pixels of `rect` (box_layout(rect).lanes <= Lanes(di)).
+// The lanes' pixels of `rect` (box_layout(rect).lanes <= Lanes(di) <= kBoxMaxLanes).
 template <class DI>
-HWY_INLINE BoxLanes<DI> BoxPixels(DI di, const PixelRect& rect, BoxLayout layout) {
-  const auto lane = hn::Iota(di, 0);
-  const auto col = hn::And(lane, hn::Set(di, (1 << layout.pitch_shift) - 1));
-  const auto row = hn::ShiftRightSame(lane, layout.pitch_shift);
-  return {col, row,
-          hn::And(hn::Lt(col, hn::Set(di, rect.x1 - rect.x0 + 1)), hn::Lt(row, hn::Set(di, rect.y1 - rect.y0 + 1)))};
+HWY_INLINE BoxLanes<DI> BoxPixels(DI di, BoxLayout layout) {
+  static_assert(hn::MaxLanes(DI()) <= kBoxMaxLanes);
+  return {hn::Load(di, kBoxLaneOffsets.col[layout.width - 1]), hn::Load(di, kBoxLaneOffsets.row[layout.width - 1]),
+          hn::FirstN(di, static_cast<size_t>(layout.lanes))};
 }
 
 // The lanes of `box` whose pixel centre the triangle covers (the triangle box_lanes_exact(), so

@@ -22,7 +22,7 @@ int BoxMasksFn(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
   const hn::ScalableTag<int32_t> di;
   const BoxLayout layout = box_layout(rect);
   if (layout.lanes > static_cast<int>(hn::Lanes(di))) return -1;
-  const auto box = BoxPixels(di, rect, layout);
+  const auto box = BoxPixels(di, layout);
   const auto covered = BoxCovered(di, te, rect, box);
   alignas(64) int32_t col[HWY_MAX_BYTES / 4], row[HWY_MAX_BYTES / 4];
   hn::Store(box.col, di, col);

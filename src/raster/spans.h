@@ -103,6 +103,21 @@ inline bool box_lanes_exact(const SetupTriangle& t) {
   return t.px_max[0] - t.px_min[0] < kBoxLanesMaxPx && t.px_max[1] - t.px_min[1] < kBoxLanesMaxPx;
 }
 
+// Lane i of a box kBoxLaneOffsets.col[w - 1][i] columns and kBoxLaneOffsets.row[w - 1][i] rows from its
+// first pixel, for a box w pixels wide: one vector holds a box of w x h <= lanes pixels
+// (raster/row_masks-inl.h BoxPixels), with no division in the lanes.
+inline constexpr int kBoxMaxLanes = 16;  // int32 lanes of the widest vector (AVX-512)
+struct BoxLaneTable {
+  alignas(64) int32_t col[kNarrowRectPx][kBoxMaxLanes];
+  alignas(64) int32_t row[kNarrowRectPx][kBoxMaxLanes];
+};
+inline constexpr BoxLaneTable kBoxLaneOffsets = [] {
+  BoxLaneTable t{};
+  for (int w = 1; w <= kNarrowRectPx; ++w)
+    for (int i = 0; i < kBoxMaxLanes; ++i) t.col[w - 1][i] = i % w, t.row[w - 1][i] = i / w;
+  return t;
+}();
+
 // For a rectangle narrower than kNarrowRectPx: calls row(py, bits) for every row, bit k set
 // where pixel rect.x0 + k is covered. Branch-free per pixel; a row's bits are one run since
 // triangles are convex.

@@ -267,7 +267,7 @@ template <class D, typename ShadeFn>
 HWY_INLINE void ShadeBox(D d, TriangleInTile& tri, const TileTarget& tt, BoxLayout layout, ShadeFn&& shade) {
   const hn::RebindToSigned<D> di;
   const PixelRect& r = tri.rect;
-  const auto box = BoxPixels(di, r, layout);
+  const auto box = BoxPixels(di, layout);
   const int stride_shift = std::countr_zero(static_cast<unsigned>(tt.stride));
   const auto at = hn::IfThenElseZero(  // lanes outside the box: a valid index
       box.inside, hn::Add(hn::ShiftLeftSame(hn::Add(box.row, hn::Set(di, r.y0 - tt.y_origin)), stride_shift),
