@@ -46,7 +46,8 @@ struct SetupTriangle {
   uint16_t flags;            // kBackFacing
 };
 inline constexpr uint32_t kClippedAttr = 0x80000000u;
-inline constexpr uint32_t kSeveralTiles = 0xFFFFFFFFu;  // Chunk::only_tile of a triangle binned to more than one tile
+// Chunk::only_tile of a triangle binned to any number of tiles but one.
+inline constexpr uint32_t kSeveralTiles = 0xFFFFFFFFu;
 inline constexpr uint16_t kBackFacing = 1;
 // Bits 1-3: which Sierpinski part of its triangle this record covers (0: the whole triangle;
 // frame/edge_function.h). The record keeps the parent's vertices: attributes are the parent's.
@@ -64,7 +65,7 @@ struct Chunk {
   AttrArrays clipped;  // attributes of vertices that clipping made
   uint32_t clipped_count = 0;
   std::vector<uint32_t> tile_counts;  // per tile: how many of this chunk's triangles it holds
-  std::vector<uint32_t> only_tile;    // per triangle: its tile, or kSeveralTiles
+  std::vector<uint32_t> only_tile;    // per triangle: its one tile, or kSeveralTiles
   std::vector<uint8_t> tile_paths;    // per tile: bit p set if a triangle takes path p (classified frames)
   long long dropped = 0, culled = 0;
   PathTally paths;                    // what the classifier decided for this chunk's triangles

@@ -95,17 +95,17 @@ struct EdgeBound {
 inline constexpr int kNarrowRectPx = 16;
 
 // Edge values fit int32 lanes (raster/row_masks-inl.h BoxCovered) when the whole triangle's
-// box spans at most kBoxLanesMaxPx pixel centres each way: its vertices then lie within
-// kBoxLanesMaxPx + 1 pixels of any centre of the box, so |a|, |b| and every offset are below
+// box spans at most kBoxExactSpanPx pixel centres each way: its vertices then lie within
+// kBoxExactSpanPx + 1 pixels of any centre of the box, so |a|, |b| and every offset are below
 // 18 * 512 edge units and |E| <= 2 * 9216^2 ~ 1.7e8 < 2^31.
-inline constexpr int kBoxLanesMaxPx = 16;
+inline constexpr int kBoxExactSpanPx = 16;
 inline bool box_lanes_exact(const SetupTriangle& t) {
-  return t.px_max[0] - t.px_min[0] < kBoxLanesMaxPx && t.px_max[1] - t.px_min[1] < kBoxLanesMaxPx;
+  return t.px_max[0] - t.px_min[0] < kBoxExactSpanPx && t.px_max[1] - t.px_min[1] < kBoxExactSpanPx;
 }
 
-// Lane i of a box kBoxLaneOffsets.col[w - 1][i] columns and kBoxLaneOffsets.row[w - 1][i] rows from its
-// first pixel, for a box w pixels wide: one vector holds a box of w x h <= lanes pixels
-// (raster/row_masks-inl.h BoxPixels), with no division in the lanes.
+// Lane i of a box w pixels wide lies kBoxLaneOffsets.col[w - 1][i] columns and
+// kBoxLaneOffsets.row[w - 1][i] rows from its first pixel: one vector holds a box of
+// w x h <= lanes pixels (raster/row_masks-inl.h BoxPixels), with no division in the lanes.
 inline constexpr int kBoxMaxLanes = 16;  // int32 lanes of the widest vector (AVX-512)
 struct BoxLaneTable {
   alignas(64) int32_t col[kNarrowRectPx][kBoxMaxLanes];

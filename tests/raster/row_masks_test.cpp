@@ -75,7 +75,7 @@ PixelRect centre_box(const int64_t x[3], const int64_t y[3]) {
 }
 
 // BoxCovered's int32 lanes against the scalar masks, on every ISA: triangles whose box spans
-// up to kBoxLanesMaxPx centres each way (the largest edge values it promises to hold), every
+// up to kBoxExactSpanPx centres each way (the largest edge values it promises to hold), every
 // sub-rectangle shape that fits the ISA's vector.
 TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
   int isas = 0;
@@ -83,7 +83,7 @@ TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
     select_isa(isa);
     ++isas;
     std::mt19937 rng(11);
-    std::uniform_int_distribution<int64_t> coord(0, (kBoxLanesMaxPx + 1) * kEdgeUnitsPerPixel - 1);
+    std::uniform_int_distribution<int64_t> coord(0, (kBoxExactSpanPx + 1) * kEdgeUnitsPerPixel - 1);
     long long covered_total = 0, rects = 0;
     for (int trial = 0; trial < 20000; ++trial) {
       int64_t x[3], y[3];
@@ -102,13 +102,13 @@ TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
       if (area < 0) std::swap(x[1], x[2]), std::swap(y[1], y[2]);
       const PixelRect box = centre_box(x, y);
       if (box.x0 > box.x1 || box.y0 > box.y1) continue;
-      if (box.x1 - box.x0 >= kBoxLanesMaxPx || box.y1 - box.y0 >= kBoxLanesMaxPx) continue;
+      if (box.x1 - box.x0 >= kBoxExactSpanPx || box.y1 - box.y0 >= kBoxExactSpanPx) continue;
       const TriangleEdges te = edges_of(x, y);
       // The whole box and a random part of it (a tile's share).
       std::uniform_int_distribution<int> cx(box.x0, box.x1), cy(box.y0, box.y1);
       const int ax = cx(rng), bx = cx(rng), ay = cy(rng), by = cy(rng);
       for (const PixelRect& rect : {box, PixelRect{std::min(ax, bx), std::min(ay, by), std::max(ax, bx), std::max(ay, by)}}) {
-        uint32_t simd[kBoxLanesMaxPx] = {};
+        uint32_t simd[kBoxExactSpanPx] = {};
         const int covered = box_masks(te, rect, simd);
         if (covered < 0) continue;  // wider than this ISA's vector
         ++rects;
