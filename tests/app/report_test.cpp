@@ -101,7 +101,9 @@ bool table_has(std::string_view line) {
 
 TEST(ReportConfigs, TableCoversEveryOptionWorthKnowing) {
   for (const std::string& brdf : brdf_names()) {
-    if (brdf != "exact") EXPECT_TRUE(table_has("phong --brdf " + brdf)) << brdf;
+    if (brdf != "exact") {
+      EXPECT_TRUE(table_has("phong --brdf " + brdf)) << brdf;
+    }
   }
   for (const char* normals : {"adaptive", "equal-angle"})
     EXPECT_TRUE(table_has(std::string("phong --normals ") + normals)) << normals;

@@ -92,11 +92,15 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
           ClassifyInput in;
           for (int v = 0; v < 3; ++v) in.n[v] = dvec3(normals[3 * t + v]);
           const Classification expected = classifier.classify(in, 0);
-          if (s.lights <= 32) ASSERT_NE(path[t], ShadePath::Unclassified) << isa << ": the lanes settle every triangle";
-          if (path[t] != ShadePath::Unclassified)
+          if (s.lights <= 32) {
+            ASSERT_NE(path[t], ShadePath::Unclassified) << isa << ": the lanes settle every triangle";
+          }
+          if (path[t] != ShadePath::Unclassified) {
             ASSERT_EQ(expected.path, path[t]) << isa << " triangle " << t << " of " << count;
-          if (path[t] == ShadePath::Specular)
+          }
+          if (path[t] == ShadePath::Specular) {
             ASSERT_EQ(expected.lights_with_highlight, light[t]) << isa << " triangle " << t;
+          }
           if (count == lengths.back()) {
             settled += path[t] == ShadePath::GouraudDiffuse;
             gouraud += expected.path == ShadePath::GouraudDiffuse;
@@ -108,7 +112,9 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
       // the lanes would save nothing there.
       EXPECT_GT(gouraud, 100) << isa << ": the cases must reach Gouraud to test anything";
       EXPECT_GE(settled, gouraud * 6 / 10) << isa << " settled " << settled << " of " << gouraud;
-      if (s.ks > 0.0f) EXPECT_GT(specular, 0) << isa << ": vertex highlights must be settled too";
+      if (s.ks > 0.0f) {
+        EXPECT_GT(specular, 0) << isa << ": vertex highlights must be settled too";
+      }
     }
   }
   select_isa("best");

@@ -94,7 +94,9 @@ TEST(Auto, ZeroThresholdIsExactlyTheSpecularMethod) {
       const Image a = render(scene, o, 1, &stats);
       EXPECT_EQ(a.rgb, render(scene, with_method(spec_method)).rgb) << file << " " << spec_method;
       for (const PathStats& p : stats.paths)
-        if (p.name != "specular") EXPECT_EQ(p.triangles, 0) << file << " " << p.name;
+        if (p.name != "specular") {
+          EXPECT_EQ(p.triangles, 0) << file << " " << p.name;
+        }
     }
   }
 }
@@ -119,7 +121,9 @@ TEST(Auto, LeavesOutSpecularWorkWhenKsIsZero) {
   const Image a = render(scene, with_method("auto"), 1, &stats);
   ASSERT_EQ(stats.paths.size(), 3u);
   for (const PathStats& p : stats.paths)
-    if (p.name == "specular") EXPECT_EQ(p.triangles, 0);
+    if (p.name == "specular") {
+      EXPECT_EQ(p.triangles, 0);
+    }
   EXPECT_TRUE(mentions(stats, "ks = 0"));
   EXPECT_TRUE(mentions(stats, "no specular code ran"));
   const ImageDiff d = compare_images(to_float(a), to_float(render(scene, with_method("reference"))));
