@@ -98,7 +98,7 @@ class ChunkBuilder {
       ++chunk_.culled;
       return;
     }
-    SetupTriangle& t = chunk_.triangles.emplace_back();
+    SetupTriangle t;  // built whole, then appended: emplace_back() would zero the record first
     t.x_fx[0] = a.x_fx, t.x_fx[1] = v1.x_fx, t.x_fx[2] = v2.x_fx;
     t.y_fx[0] = a.y_fx, t.y_fx[1] = v1.y_fx, t.y_fx[2] = v2.y_fx;
     t.depth[0] = a.depth, t.depth[1] = v1.depth, t.depth[2] = v2.depth;
@@ -112,6 +112,7 @@ class ChunkBuilder {
     t.flags = back_facing ? kBackFacing : 0;
     if (p_.classifier)
       t.flags |= static_cast<uint16_t>(static_cast<int>(path(back_facing)) << kShadePathShift);
+    chunk_.triangles.push_back(t);
     if (p_.sierpinski && std::max(px1 - px0, py1 - py0) + 1 >= limits::kSierpinskiMinPx) split_sierpinski();
   }
 
