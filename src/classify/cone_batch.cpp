@@ -3,12 +3,14 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include <hwy/highway.h>
 
 #include "classify/cone_batch.h"
 #include "core/dot3-inl.h"
+#include "core/mask_bits-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
@@ -217,10 +219,10 @@ HWY_INLINE V ExactSpecular(D d, const ConeBatchTerms& t, const Vec3<D> n[3], hn:
     if (!hn::AllFalse(d, powed)) {
       alignas(64) double value[kLanes];
       hn::Store(c, d, value);
-      uint8_t bits[8] = {};
-      hn::StoreMaskBits(d, powed, bits);
-      for (std::size_t j = 0; j < hn::Lanes(d); ++j)
-        if ((bits[j / 8] >> (j % 8)) & 1) value[j] = light.spec_weight * std::pow(std::min(value[j], 1.0), t.shininess);
+      for (uint64_t lanes = MaskBits(d, powed); lanes; lanes &= lanes - 1) {
+        const int j = std::countr_zero(lanes);
+        value[j] = light.spec_weight * std::pow(std::min(value[j], 1.0), t.shininess);
+      }
       term = hn::IfThenElse(powed, hn::Load(d, value), term);
     }
     spec = hn::Add(spec, term);
@@ -276,16 +278,13 @@ void DecidePathsBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, st
   const std::size_t lanes = hn::Lanes(d);
   constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
   auto write = [&](const Decided<D>& decided, hn::Mask<D> valid, auto index_of) {
-    uint8_t gouraud[8] = {}, specular[8] = {}, pixel[8] = {}, in[8] = {};
-    hn::StoreMaskBits(d, decided.gouraud, gouraud);
-    hn::StoreMaskBits(d, decided.specular, specular);
-    hn::StoreMaskBits(d, decided.pixel_diffuse, pixel);
-    hn::StoreMaskBits(d, valid, in);
+    const uint64_t gouraud = MaskBits(d, decided.gouraud), specular = MaskBits(d, decided.specular),
+                   pixel = MaskBits(d, decided.pixel_diffuse);
     alignas(64) double light_bits[kMaxLanes];
     hn::Store(decided.lights, d, light_bits);
-    for (std::size_t k = 0; k < lanes; ++k) {
-      auto bit = [&](const uint8_t* bits) { return (bits[k / 8] >> (k % 8)) & 1; };
-      if (!bit(in)) continue;
+    for (uint64_t in = MaskBits(d, valid); in; in &= in - 1) {
+      const int k = std::countr_zero(in);
+      auto bit = [&](uint64_t bits) { return (bits >> k) & 1; };
       const std::size_t t = index_of(k);
       path[t] = bit(specular) ? ShadePath::Specular
                 : bit(gouraud) ? ShadePath::GouraudDiffuse
@@ -328,10 +327,8 @@ void DecidePathsBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, st
       hn::Store(look.spec_cone, d, spec);
       hn::Store(look.diffuse_cone, d, diffuse);
       hn::Store(look.cheap, d, cheap);
-      uint8_t bits[8] = {};
-      hn::StoreMaskBits(d, left, bits);
-      for (std::size_t k = 0; k < lanes; ++k) {
-        if (!((bits[k / 8] >> (k % 8)) & 1)) continue;
+      for (uint64_t bits = MaskBits(d, left); bits; bits &= bits - 1) {
+        const int k = std::countr_zero(bits);
         for (int c = 0; c < 9; ++c) rest_n[c][rest] = soa->n[c][at + k];
         rest_spec[rest] = spec[k], rest_diffuse[rest] = diffuse[k], rest_cheap[rest] = cheap[k];
         rest_index[rest++] = static_cast<uint32_t>(i + k);

@@ -9,9 +9,10 @@
 
 #include <bit>
 #include <cstdint>
-#include <cstring>
 
 #include <hwy/highway.h>
+
+#include "core/mask_bits-inl.h"
 
 #include "raster/spans.h"
 
@@ -48,11 +49,7 @@ HWY_INLINE int RowMasks(const TriangleEdges& te, const PixelRect& rect, uint32_t
         in = hn::And(in, hn::Ge(hn::Add(hn::Set(d, e_first[k]), lane_step[k]), threshold[k]));
         e_first[k] += lanes * step_x[k];
       }
-      uint8_t mask_bytes[8] = {};
-      hn::StoreMaskBits(d, in, mask_bytes);
-      uint32_t vector_bits = 0;
-      std::memcpy(&vector_bits, mask_bytes, sizeof(vector_bits));
-      row_bits |= vector_bits << first;
+      row_bits |= static_cast<uint32_t>(MaskBits(d, in)) << first;
     }
     bits[row] = row_bits;
     covered += std::popcount(row_bits);

@@ -3,7 +3,6 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
 #include <algorithm>
-#include <cstring>
 
 #include <hwy/highway.h>
 
@@ -28,11 +27,7 @@ int BoxMasksFn(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
   hn::Store(box.col, di, col);
   hn::Store(box.row, di, row);
   std::fill(bits, bits + (rect.y1 - rect.y0 + 1), 0u);
-  uint8_t mask_bytes[8] = {};
-  hn::StoreMaskBits(di, covered, mask_bytes);
-  uint64_t lanes = 0;
-  std::memcpy(&lanes, mask_bytes, sizeof(lanes));
-  for (; lanes; lanes &= lanes - 1) {
+  for (uint64_t lanes = MaskBits(di, covered); lanes; lanes &= lanes - 1) {
     const int lane = std::countr_zero(lanes);
     bits[row[lane]] |= 1u << col[lane];
   }

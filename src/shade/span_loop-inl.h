@@ -10,10 +10,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstring>
 
 #include <hwy/highway.h>
 
+#include "core/mask_bits-inl.h"
 #include "shade/fast_math-inl.h"
 
 #include "raster/row_masks-inl.h"
@@ -167,11 +167,7 @@ HWY_INLINE void StorePassed(D d, hn::Mask<D> pass, V z, VU rgba, const int32_t* 
   alignas(64) uint32_t lane_rgba[kMaxLanes];
   hn::Store(z, d, lane_z);
   hn::Store(hn::Xor(rgba, hn::Set(du, tt.alpha_xor)), du, lane_rgba);
-  uint8_t pass_bytes[8] = {};
-  hn::StoreMaskBits(d, pass, pass_bytes);
-  uint32_t passed = 0;
-  std::memcpy(&passed, pass_bytes, sizeof(passed));
-  for (; passed; passed &= passed - 1) {
+  for (uint64_t passed = MaskBits(d, pass); passed; passed &= passed - 1) {
     const int lane = std::countr_zero(passed);
     tt.depth[lane_at[lane]] = lane_z[lane];
     tt.color[lane_at[lane]] = lane_rgba[lane];
