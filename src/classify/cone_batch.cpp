@@ -271,6 +271,9 @@ HWY_INLINE Decided<D> ExactLanes(D d, const ConeBatchTerms& t, const Vec3<D> n[3
   return {hn::AndNot(specular, within), specular, hn::AndNot(specular, hn::Not(within)), lights};
 }
 
+// Lanes past a batch's end hold a harmless triangle: all three normals +z.
+constexpr double kPadNormals[9] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+
 void DecidePathsBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
                       ShadePath* path, uint64_t* lights) {
   using D = hn::ScalableTag<double>;
@@ -310,9 +313,9 @@ void DecidePathsBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, st
       const std::size_t n_valid = std::min(lanes, block_end - i);
       const NormalsSoA* soa = &normals;
       std::size_t at = i;
-      if (n_valid < lanes) {  // the tail: copied into a full vector of a harmless triangle (all normals +z)
+      if (n_valid < lanes) {  // the tail: copied into a full vector, padded
         for (int k = 0; k < 9; ++k)
-          for (std::size_t j = 0; j < lanes; ++j) tail[k][j] = j < n_valid ? normals.n[k][i + j] : (k % 3 == 2 ? 1.0 : 0.0);
+          for (std::size_t j = 0; j < lanes; ++j) tail[k][j] = j < n_valid ? normals.n[k][i + j] : kPadNormals[k];
         soa = &tail_soa;
         at = 0;
       }
@@ -335,7 +338,7 @@ void DecidePathsBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, st
       }
     }
     for (std::size_t j = rest; j % lanes != 0; ++j) {  // pad to whole vectors, lanes masked off
-      for (int c = 0; c < 9; ++c) rest_n[c][j] = c % 3 == 2 ? 1.0 : 0.0;
+      for (int c = 0; c < 9; ++c) rest_n[c][j] = kPadNormals[c];
       rest_spec[j] = rest_diffuse[j] = 0.0, rest_cheap[j] = 1.0;
     }
     for (std::size_t j = 0; j < rest; j += lanes) {
