@@ -7,8 +7,9 @@
 
 namespace fastshade {
 
-// Rows of bytes into the framebuffer (src_stride_bytes 0: the same row every time), with
-// non-temporal stores: what an empty tile writes.
+// Rows of bytes into the framebuffer (src_stride_bytes 0: the same row every time), whole
+// cache lines with non-temporal stores and the partial lines at a row's ends with ordinary
+// ones: what an empty tile writes.
 void stream_rows(const uint8_t* src, int src_stride_bytes, uint8_t* dst, int dst_stride_bytes,
                  int row_bytes, int rows);
 // Packed RGBA8 tile rows to RGB8 framebuffer rows (alpha dropped). SIMD on the chosen ISA,
