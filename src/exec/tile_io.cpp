@@ -21,8 +21,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 // stores (a 4K frame writes 25 MB that will not be read back before it leaves the cache, and
 // an ordinary store first reads the line it writes: read for ownership), the partial lines at
 // its ends with ordinary ones. The split is at cache lines, not vectors: a line written partly
-// by streaming and partly by ordinary stores is read back from memory, once per row (with the
-// head aligned to 32-byte vectors on AVX2, that doubled a 4K gouraud frame on a Zen 3 guest).
+// by streaming and partly by ordinary stores costs a trip to memory, once per row (with the
+// head aligned to 32-byte vectors on AVX2, that doubled a 1-thread 4K gouraud frame of
+// `render --frames` on a Zen 3 guest, docs/PERFORMANCE.md "Session 7").
 void StreamRow(const uint8_t* src, uint8_t* dst, std::size_t bytes) {
   constexpr std::size_t kLineBytes = 64;
   static_assert(kLineBytes % HWY_MAX_BYTES == 0, "the body loop steps whole vectors through whole lines");
