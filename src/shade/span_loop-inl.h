@@ -90,7 +90,10 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
 
 // Walks one covered row span a vector at a time: depth test against the tile, then
 // shade(d, offsets, x) for vectors with a lane that passes (x: the vector's first pixel),
-// then blended stores of colour and depth.
+// then colour and depth blended in registers and stored whole: the rows are the worker's own
+// scratch (TileTarget), so lanes that fail write back what they read. AVX2's masked stores
+// (vmaskmovps, vpmaskmovd) are microcoded on Zen 3: the gouraud span benchmark ran 200 ns with
+// them and 152 ns without (64 px, kernels_bench, docs/PERFORMANCE.md session 8).
 template <class D, typename ShadeFn>
 HWY_INLINE void ShadeSpanAt(D d, const Barycentrics& bary, const Plane& depth_plane, int py,
                             int x0, int x1, RowTarget row, ShadeFn&& shade) {
@@ -108,11 +111,12 @@ HWY_INLINE void ShadeSpanAt(D d, const Barycentrics& bary, const Plane& depth_pl
   for (int x = x0; x <= x1; x += lanes) {
     const auto inside = hn::RebindMask(d, hn::Lt(xi, end));
     const auto z = EvalPlane(d, depth_plane, o);
-    const auto pass = hn::And(inside, hn::Lt(z, hn::LoadU(d, row.depth + x)));
+    const auto old_z = hn::LoadU(d, row.depth + x);
+    const auto pass = hn::And(inside, hn::Lt(z, old_z));
     if (!hn::AllFalse(d, pass)) {
       const auto rgba = hn::Xor(shade(d, o, x), hn::Set(du, row.alpha_xor));
-      hn::BlendedStore(z, pass, d, row.depth + x);
-      hn::BlendedStore(rgba, hn::RebindMask(du, pass), du, row.color + x);
+      hn::StoreU(hn::IfThenElse(pass, z, old_z), d, row.depth + x);
+      hn::StoreU(hn::IfThenElse(hn::RebindMask(du, pass), rgba, hn::LoadU(du, row.color + x)), du, row.color + x);
     }
     xi = hn::Add(xi, step);
     if (block_wide) o.block_dx = hn::Add(o.block_dx, block_step);
@@ -144,7 +148,7 @@ HWY_INLINE void WithNarrowestVector(size_t n, Fn&& fn) {
 }
 
 // A row span in the narrowest vectors that hold it. The rows must have kScratchPadPx of slack
-// past x1 (a vector may read and blend past it).
+// past x1 (a vector reads and rewrites lanes past it).
 template <typename ShadeFn>
 HWY_INLINE void ShadeSpan(const Barycentrics& bary, const Plane& depth_plane, int py, int x0,
                           int x1, RowTarget row, ShadeFn&& shade) {
