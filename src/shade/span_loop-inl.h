@@ -178,76 +178,13 @@ HWY_INLINE void StorePassed(D d, hn::Mask<D> pass, V z, VU rgba, const int32_t* 
   }
 }
 
-// A narrow triangle's covered pixels, packed into lanes whatever their row: a 6-pixel
-// triangle is one vector instead of three nearly empty row vectors. Pixels move between the
-// tile and the lanes through small arrays; a vector is shaded only if a lane passes the depth
-// test (a dense mesh hides many of its triangles). The lanes' offsets are the span path's
-// (MakeLaneOffsets), so a pixel gets the same bits whichever path drew it.
+// Covered pixels already in the first `count` lanes (lane_px, lane_py; lane_at their tile
+// index and lane_z its depth; the arrays are a whole vector long): planes, depth test and
+// shading of one vector, for ShadePackedWith and ShadeBox.
 template <class D, typename ShadeFn>
-HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
-                                const uint32_t* row_bits, ShadeFn&& shade) {
-  const hn::RebindToSigned<D> di;
-  const int lanes = static_cast<int>(hn::Lanes(d));
-  alignas(64) int32_t lane_px[kMaxLanes], lane_dy[kMaxLanes], lane_at[kMaxLanes];
-  tri.set_up_planes();
-  const Barycentrics& bary = tri.bary;
-  auto flush = [&](int n) {
-    for (int i = n; i < lanes; ++i)  // idle lanes repeat lane 0: valid addresses, masked off
-      lane_px[i] = lane_px[0], lane_dy[i] = lane_dy[0], lane_at[i] = lane_at[0];
-    const auto o = MakeLaneOffsets(d, bary, hn::Load(di, lane_px), hn::ConvertTo(d, hn::Load(di, lane_dy)));
-    const auto z = EvalPlane(d, tri.depth, o);
-    const auto pass = hn::And(hn::FirstN(d, static_cast<size_t>(n)),
-                              hn::Lt(z, hn::GatherIndex(d, tt.depth, hn::Load(di, lane_at))));
-    if (hn::AllFalse(d, pass)) return;
-    StorePassed(d, pass, z, shade(d, o), lane_at, tt);
-  };
-  const PixelRect& r = tri.rect;
-  int n = 0;
-  for (int py = r.y0; py <= r.y1; ++py)
-    for (uint32_t bits = row_bits[py - r.y0]; bits; bits &= bits - 1) {
-      const int px = r.x0 + std::countr_zero(bits);
-      lane_px[n] = px;
-      lane_dy[n] = py - bary.ay;
-      lane_at[n] = (py - tt.y_origin) * tt.stride + (px - tt.x_origin);
-      if (++n == lanes) {
-        flush(n);
-        n = 0;
-      }
-    }
-  if (n > 0) flush(n);
-}
-
-// Whether no covered pixel can pass the depth test, decided before any plane is set up: the
-// depth plane is clamped to the vertex depths (raster/planes.h), so no pixel of the triangle is
-// nearer than its nearest vertex, and where every covered pixel already holds that depth or a
-// nearer one, the triangle draws nothing. Dense meshes drawn in mesh order hide many triangles
-// behind ones drawn before; the answer is exact, so images do not change.
-// row_bits: the covered pixels; nullptr tests the whole box, which a small triangle can do
-// before its edges are even set up.
-HWY_INLINE bool HiddenAlready(const TriangleInTile& tri, const TileTarget& tt, const uint32_t* row_bits) {
-  const SetupTriangle& t = *tri.tri;
-  const float nearest = std::min({t.depth[0], t.depth[1], t.depth[2]});
-  const PixelRect& r = tri.rect;
-  const uint32_t whole_row = (uint32_t(2) << (r.x1 - r.x0)) - 1;  // rect narrower than 32
-  for (int py = r.y0; py <= r.y1; ++py) {
-    const float* depth = tt.depth + (py - tt.y_origin) * tt.stride + (r.x0 - tt.x_origin);
-    for (uint32_t bits = row_bits ? row_bits[py - r.y0] : whole_row; bits; bits &= bits - 1)
-      if (depth[std::countr_zero(bits)] > nearest) return false;
-  }
-  return true;
-}
-
-// Boxes up to this many pixels are tested whole before coverage: a dense mesh's triangles are
-// boxes of 1-9 pixels, and the test stops at the first pixel that could still change.
-inline constexpr int kHiddenBoxTestPx = 16;
-
-// The covered pixels of a small box, already in the first `count` lanes (lane_px, lane_py;
-// lane_at their tile index and lane_z its depth, 0 past count): planes, depth test and
-// shading, as ShadePackedWith does for a packed vector.
-template <class D, typename ShadeFn>
-HWY_INLINE void ShadeBoxLanes(D d, TriangleInTile& tri, const TileTarget& tt, const int32_t* lane_px,
-                              const int32_t* lane_py, const int32_t* lane_at, const float* lane_z, size_t count,
-                              ShadeFn&& shade) {
+HWY_INLINE void ShadeLanes(D d, TriangleInTile& tri, const TileTarget& tt, const int32_t* lane_px,
+                           const int32_t* lane_py, const int32_t* lane_at, const float* lane_z, size_t count,
+                           ShadeFn&& shade) {
   const hn::RebindToSigned<D> di;
   tri.set_up_planes();
   const auto dy = hn::ConvertTo(d, hn::Sub(hn::Load(di, lane_py), hn::Set(di, tri.bary.ay)));
@@ -257,6 +194,67 @@ HWY_INLINE void ShadeBoxLanes(D d, TriangleInTile& tri, const TileTarget& tt, co
   if (hn::AllFalse(d, pass)) return;
   StorePassed(d, pass, z, shade(d, o), lane_at, tt);
 }
+
+// A narrow triangle's covered pixels, packed into lanes whatever their row: a 6-pixel
+// triangle is one vector instead of three nearly empty row vectors. Pixels move between the
+// tile and the lanes through small arrays, their tile depths read as they are packed. A
+// vector whose tile depths are all at or nearer than the triangle's nearest vertex draws
+// nothing (HiddenAlready's test, vector by vector) and is skipped before the planes are set
+// up: a dense mesh hides many of its triangles. The lanes' offsets are the span path's
+// (MakeLaneOffsets), so a pixel gets the same bits whichever path drew it.
+template <class D, typename ShadeFn>
+HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
+                                const uint32_t* row_bits, ShadeFn&& shade) {
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  alignas(64) int32_t lane_px[kMaxLanes], lane_py[kMaxLanes], lane_at[kMaxLanes];
+  alignas(64) float lane_z[kMaxLanes];
+  const SetupTriangle& t = *tri.tri;
+  const auto nearest = hn::Set(d, std::min({t.depth[0], t.depth[1], t.depth[2]}));
+  auto flush = [&](int n) {
+    for (int i = n; i < lanes; ++i)  // idle lanes repeat lane 0: valid values, masked off
+      lane_px[i] = lane_px[0], lane_py[i] = lane_py[0], lane_at[i] = lane_at[0], lane_z[i] = lane_z[0];
+    const auto nearer = hn::Gt(hn::Load(d, lane_z), nearest);
+    if (hn::AllFalse(d, hn::And(hn::FirstN(d, static_cast<size_t>(n)), nearer))) return;
+    ShadeLanes(d, tri, tt, lane_px, lane_py, lane_at, lane_z, static_cast<size_t>(n), shade);
+  };
+  const PixelRect& r = tri.rect;
+  int n = 0;
+  for (int py = r.y0; py <= r.y1; ++py)
+    for (uint32_t bits = row_bits[py - r.y0]; bits; bits &= bits - 1) {
+      const int px = r.x0 + std::countr_zero(bits);
+      lane_px[n] = px;
+      lane_py[n] = py;
+      lane_at[n] = (py - tt.y_origin) * tt.stride + (px - tt.x_origin);
+      lane_z[n] = tt.depth[lane_at[n]];
+      if (++n == lanes) {
+        flush(n);
+        n = 0;
+      }
+    }
+  if (n > 0) flush(n);
+}
+
+// Whether no pixel of the triangle's box can pass the depth test, decided before its edges
+// or planes are set up: the depth plane is clamped to the vertex depths (raster/planes.h), so
+// no pixel of the triangle is nearer than its nearest vertex, and where every pixel of the box
+// already holds that depth or a nearer one, the triangle draws nothing. Dense meshes drawn in
+// mesh order hide many triangles behind ones drawn before; the answer is exact, so images do
+// not change. (ShadePackedWith makes the same test on the covered pixels it packs.)
+HWY_INLINE bool HiddenAlready(const TriangleInTile& tri, const TileTarget& tt) {
+  const SetupTriangle& t = *tri.tri;
+  const float nearest = std::min({t.depth[0], t.depth[1], t.depth[2]});
+  const PixelRect& r = tri.rect;
+  for (int py = r.y0; py <= r.y1; ++py) {
+    const float* depth = tt.depth + (py - tt.y_origin) * tt.stride - tt.x_origin;
+    for (int px = r.x0; px <= r.x1; ++px)
+      if (depth[px] > nearest) return false;
+  }
+  return true;
+}
+
+// Boxes up to this many pixels are tested whole before coverage: a dense mesh's triangles are
+// boxes of 1-9 pixels, and the test stops at the first pixel that could still change.
+inline constexpr int kHiddenBoxTestPx = 16;
 
 // A dense mesh's small boxes (box_layout fits a vector, the triangle box_lanes_exact), in
 // vectors of d's width: the box's tile depths in one gather, HiddenAlready on the whole box
@@ -286,7 +284,7 @@ HWY_INLINE void ShadeBox(D d, TriangleInTile& tri, const TileTarget& tt, BoxLayo
   hn::Store(hn::Compress(hn::Add(box.row, hn::Set(di, r.y0)), covered), di, lane_py);
   hn::Store(hn::IfThenElseZero(hn::FirstN(di, count), hn::Compress(at, covered)), di, lane_at);
   hn::Store(hn::Compress(tile_z, hn::RebindMask(d, covered)), d, lane_z);
-  WithNarrowestVector(count, [&](auto dc) { ShadeBoxLanes(dc, tri, tt, lane_px, lane_py, lane_at, lane_z, count, shade); });
+  WithNarrowestVector(count, [&](auto dc) { ShadeLanes(dc, tri, tt, lane_px, lane_py, lane_at, lane_z, count, shade); });
 }
 
 // Narrow triangles whose box ShadeBox cannot take: SIMD row masks, then the covered pixels in
@@ -295,7 +293,7 @@ template <typename ShadeFn>
 HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
   uint32_t row_bits[limits::kMaxTilePx];
   const int covered = RowMasks(tri.edges, tri.rect, row_bits);
-  if (covered == 0 || HiddenAlready(tri, tt, row_bits)) return;
+  if (covered == 0) return;
   WithNarrowestVector(covered, [&](auto d) { ShadePackedWith(d, tri, tt, row_bits, shade); });
 }
 
@@ -310,7 +308,7 @@ HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn
       WithNarrowestVector(layout.lanes, [&](auto d) { ShadeBox(d, tri, tt, layout, shade); });
       return;
     }
-    if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt, nullptr)) return;
+    if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt)) return;
     tri.edges = triangle_edges(*tri.tri);
     ShadePacked(tri, tt, shade);
     return;
