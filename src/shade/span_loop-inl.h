@@ -92,8 +92,8 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
 // shade(d, offsets, x) for vectors with a lane that passes (x: the vector's first pixel),
 // then colour and depth blended in registers and stored whole: the rows are the worker's own
 // scratch (TileTarget), so lanes that fail write back what they read. AVX2's masked stores
-// (vmaskmovps, vpmaskmovd) are microcoded on Zen 3: the gouraud span benchmark ran 200 ns with
-// them and 152 ns without (64 px, kernels_bench, docs/PERFORMANCE.md session 8).
+// (vmaskmovps, vpmaskmovd) are microcoded on Zen 3: the gouraud span benchmark ran 200-232 ns
+// with them and 129-144 ns without (64 px, kernels_bench, docs/PERFORMANCE.md session 8).
 template <class D, typename ShadeFn>
 HWY_INLINE void ShadeSpanAt(D d, const Barycentrics& bary, const Plane& depth_plane, int py,
                             int x0, int x1, RowTarget row, ShadeFn&& shade) {
