@@ -196,42 +196,60 @@ HWY_INLINE void ShadeLanes(D d, TriangleInTile& tri, const TileTarget& tt, const
 }
 
 // A narrow triangle's covered pixels, packed into lanes whatever their row: a 6-pixel
-// triangle is one vector instead of three nearly empty row vectors. Pixels move between the
-// tile and the lanes through small arrays, their tile depths read as they are packed. A
-// vector whose tile depths are all at or nearer than the triangle's nearest vertex draws
-// nothing (HiddenAlready's test, vector by vector) and is skipped before the planes are set
-// up: a dense mesh hides many of its triangles. The lanes' offsets are the span path's
-// (MakeLaneOffsets), so a pixel gets the same bits whichever path drew it.
+// triangle is one vector instead of three nearly empty row vectors. A row's covered pixels are
+// one run (triangles are convex), appended to small arrays a whole vector at a time: pixel
+// coordinates, tile index and the tile depth, copied from the row. The arrays are emptied a
+// vector at a time. A vector whose tile depths are all at or nearer than the triangle's
+// nearest vertex draws nothing (HiddenAlready's test, vector by vector) and is skipped before
+// the planes are set up: a dense mesh hides many of its triangles. The lanes' offsets are the
+// span path's (MakeLaneOffsets), so a pixel gets the same bits whichever path drew it.
 template <class D, typename ShadeFn>
 HWY_INLINE void ShadePackedWith(D d, TriangleInTile& tri, const TileTarget& tt,
                                 const uint32_t* row_bits, ShadeFn&& shade) {
+  const hn::RebindToSigned<D> di;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  alignas(64) int32_t lane_px[kMaxLanes], lane_py[kMaxLanes], lane_at[kMaxLanes];
-  alignas(64) float lane_z[kMaxLanes];
+  // A run of len pixels appended at n < lanes writes len / lanes + 1 whole vectors, so every
+  // lane up to the end of the vector after the last full one holds a written value (valid
+  // coordinates and indices, masked off past the count).
+  constexpr int kSlots = 2 * kMaxLanes + 32;  // a run is at most a row mask: 32 bits
+  alignas(64) int32_t lane_px[kSlots], lane_py[kSlots], lane_at[kSlots];
+  alignas(64) float lane_z[kSlots];
   const SetupTriangle& t = *tri.tri;
   const auto nearest = hn::Set(d, std::min({t.depth[0], t.depth[1], t.depth[2]}));
-  auto flush = [&](int n) {
-    for (int i = n; i < lanes; ++i)  // idle lanes repeat lane 0: valid values, masked off
-      lane_px[i] = lane_px[0], lane_py[i] = lane_py[0], lane_at[i] = lane_at[0], lane_z[i] = lane_z[0];
-    const auto nearer = hn::Gt(hn::Load(d, lane_z), nearest);
+  auto flush = [&](int first, int n) {
+    const auto nearer = hn::Gt(hn::Load(d, lane_z + first), nearest);
     if (hn::AllFalse(d, hn::And(hn::FirstN(d, static_cast<size_t>(n)), nearer))) return;
-    ShadeLanes(d, tri, tt, lane_px, lane_py, lane_at, lane_z, static_cast<size_t>(n), shade);
+    ShadeLanes(d, tri, tt, lane_px + first, lane_py + first, lane_at + first, lane_z + first,
+               static_cast<size_t>(n), shade);
   };
   const PixelRect& r = tri.rect;
+  const auto iota = hn::Iota(di, 0);
   int n = 0;
-  for (int py = r.y0; py <= r.y1; ++py)
-    for (uint32_t bits = row_bits[py - r.y0]; bits; bits &= bits - 1) {
-      const int px = r.x0 + std::countr_zero(bits);
-      lane_px[n] = px;
-      lane_py[n] = py;
-      lane_at[n] = (py - tt.y_origin) * tt.stride + (px - tt.x_origin);
-      lane_z[n] = tt.depth[lane_at[n]];
-      if (++n == lanes) {
-        flush(n);
-        n = 0;
-      }
+  for (int py = r.y0; py <= r.y1; ++py) {
+    const uint32_t bits = row_bits[py - r.y0];
+    if (bits == 0) continue;
+    const int x_first = r.x0 + std::countr_zero(bits);
+    const int len = std::popcount(bits);
+    const int row_at = (py - tt.y_origin) * tt.stride - tt.x_origin;
+    const float* run_z = tt.depth + (row_at + x_first);
+    for (int k = 0; k <= len; k += lanes) {
+      const auto px = hn::Add(iota, hn::Set(di, x_first + k));
+      hn::StoreU(px, di, lane_px + n + k);
+      hn::StoreU(hn::Set(di, py), di, lane_py + n + k);
+      hn::StoreU(hn::Add(px, hn::Set(di, row_at)), di, lane_at + n + k);
+      hn::StoreU(hn::LoadU(d, run_z + k), d, lane_z + n + k);
     }
-  if (n > 0) flush(n);
+    n += len;
+    if (n < lanes) continue;
+    int first = 0;
+    for (; n >= lanes; first += lanes, n -= lanes) flush(first, lanes);
+    // The rest moves to the front: the vector after the last full one, written whole above.
+    hn::Store(hn::Load(di, lane_px + first), di, lane_px);
+    hn::Store(hn::Load(di, lane_py + first), di, lane_py);
+    hn::Store(hn::Load(di, lane_at + first), di, lane_at);
+    hn::Store(hn::Load(d, lane_z + first), d, lane_z);
+  }
+  if (n > 0) flush(0, n);
 }
 
 // Whether no pixel of the triangle's box can pass the depth test, decided before its edges
