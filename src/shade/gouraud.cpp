@@ -6,10 +6,13 @@
 #define HWY_TARGET_INCLUDE "shade/gouraud.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
+#include <algorithm>
+
 #include <hwy/highway.h>
 
 #include "shade/lighting.h"
 #include "shade/methods.h"
+#include "shade/planes_over_w-inl.h"
 #include "shade/span_loop-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -56,7 +59,11 @@ void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
         color[i] = vertex_color<kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k);
       }
     }
-    set_gouraud_colors(in, tri.bary, color, t.inv_w);
+    Plane planes[4];  // set_gouraud_colors' planes, four at once
+    PlanesOverW(tri.bary, color, 255.0, t.inv_w, planes);
+    std::copy(planes, planes + 3, in.level_over_w);
+    in.inv_w = planes[3];
+    set_gouraud_levels(in, color);
     ready = true;
   };
   ShadeTriangle(tri, tt, [&](auto d, const auto& o) {

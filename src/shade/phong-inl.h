@@ -15,6 +15,7 @@
 #include "shade/brdf-inl.h"
 #include "shade/method.h"
 #include "shade/methods.h"
+#include "shade/planes_over_w-inl.h"
 #include "shade/span_loop-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -105,17 +106,18 @@ HWY_INLINE void set_up_phong_planes(const Frame& frame, uint32_t entry, const Se
   const ShadeConstants& k = frame.shade;
   const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
   // Each vertex's attribute is fetched once (a fetch decodes the clipped-vertex tag), then
-  // split into one plane per component.
+  // split into one plane per component (PlanesOverW: make_plane of (scale v) / w, scale +-1,
+  // which keeps float(scale v) exact, and of 1/w).
   auto planes_over_w = [&](AttrField field, float scale, Plane* planes) {
     glm::vec3 v[3];
     for (int i = 0; i < 3; ++i) v[i] = frame.vertex(entry, t.attr[i], field);
-    for (int c = 0; c < 3; ++c)
-      planes[c] = make_plane(bary, double(scale * v[0][c]) * t.inv_w[0], double(scale * v[1][c]) * t.inv_w[1],
-                             double(scale * v[2][c]) * t.inv_w[2]);
+    Plane all[4];
+    PlanesOverW(bary, v, scale, t.inv_w, all);
+    std::copy(all, all + 3, planes);
+    return all[3];
   };
   planes_over_w(&AttrArrays::n_view, flip, in.n);
-  if constexpr (kLocal) planes_over_w(&AttrArrays::pos_view, 1.0f, in.p);
-  if constexpr (kLocal) in.inv_w = make_plane(bary, t.inv_w[0], t.inv_w[1], t.inv_w[2]);
+  if constexpr (kLocal) in.inv_w = planes_over_w(&AttrArrays::pos_view, 1.0f, in.p);
 }
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, class D>

@@ -34,18 +34,23 @@ struct GouraudSpanInput {
 // The level planes and bounds from the vertex colours and 1/w (in.bary and in.depth are left
 // alone: the frame's kernels take them from the triangle); inline, so each kernel target
 // compiles it with its own instructions.
-FASTSHADE_FORCE_INLINE void set_gouraud_colors(GouraudSpanInput& in, const Barycentrics& bary, const glm::vec3 color[3],
-                                               const float inv_w[3]) {
+// The level bounds alone (the kernels set up the planes with shade/planes_over_w-inl.h).
+FASTSHADE_FORCE_INLINE void set_gouraud_levels(GouraudSpanInput& in, const glm::vec3 color[3]) {
   for (int c = 0; c < 3; ++c) {
-    in.level_over_w[c] = make_plane(bary, 255.0 * color[0][c] * inv_w[0], 255.0 * color[1][c] * inv_w[1],
-                                    255.0 * color[2][c] * inv_w[2]);
     // Pairwise min and max, not std::minmax or std::clamp: those branch, and mispredict.
     const float lo = std::min(std::min(color[0][c], color[1][c]), color[2][c]);
     const float hi = std::max(std::max(color[0][c], color[1][c]), color[2][c]);
     in.level_lo[c] = 255.0f * std::min(std::max(lo, 0.0f), 1.0f);
     in.level_hi[c] = 255.0f * std::min(std::max(hi, 0.0f), 1.0f);
   }
+}
+FASTSHADE_FORCE_INLINE void set_gouraud_colors(GouraudSpanInput& in, const Barycentrics& bary, const glm::vec3 color[3],
+                                               const float inv_w[3]) {
+  for (int c = 0; c < 3; ++c)
+    in.level_over_w[c] = make_plane(bary, 255.0 * color[0][c] * inv_w[0], 255.0 * color[1][c] * inv_w[1],
+                                    255.0 * color[2][c] * inv_w[2]);
   in.inv_w = make_plane(bary, inv_w[0], inv_w[1], inv_w[2]);
+  set_gouraud_levels(in, color);
 }
 
 struct PhongSpanInput {

@@ -1,0 +1,32 @@
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shade/planes_over_w.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include <hwy/highway.h>
+
+#include "shade/planes_over_w-inl.h"
+#include "shade/planes_over_w.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace fastshade {
+namespace HWY_NAMESPACE {
+
+void PlanesOverWFn(const Barycentrics& b, const glm::vec3* v, double scale, const float* inv_w, Plane* out) {
+  PlanesOverW(b, v, scale, inv_w, out);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace fastshade
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace fastshade {
+
+HWY_EXPORT(PlanesOverWFn);
+
+void planes_over_w(const Barycentrics& b, const glm::vec3 v[3], double scale, const float inv_w[3], Plane out[4]) {
+  HWY_DYNAMIC_DISPATCH(PlanesOverWFn)(b, v, scale, inv_w, out);
+}
+
+}  // namespace fastshade
+#endif
