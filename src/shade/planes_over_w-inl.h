@@ -1,8 +1,8 @@
 // The attribute planes of one triangle at once, one quantity per double lane (per-target,
 // Highway "-inl.h"): make_plane() in raster/planes.h is the scalar reference, bit for bit.
-// Every shaded triangle of a dense mesh sets up four planes (three components over w and 1/w),
-// and in scalar doubles that was a fifth of the dragon's gouraud back end (callgrind,
-// docs/PERFORMANCE.md session 9).
+// Every shaded triangle of a dense mesh sets up four planes (three components over w and 1/w):
+// that set-up was a fifth of the dragon's gouraud back end, three quarters of it the planes in
+// scalar doubles (callgrind, docs/PERFORMANCE.md session 9).
 #if defined(FASTSHADE_SHADE_PLANES_OVER_W_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FASTSHADE_SHADE_PLANES_OVER_W_INL_H_
 #undef FASTSHADE_SHADE_PLANES_OVER_W_INL_H_

@@ -31,10 +31,8 @@ struct GouraudSpanInput {
   Plane inv_w;
   float level_lo[3], level_hi[3];  // 255 x the vertex colours' range, within [0, 255]
 };
-// The level planes and bounds from the vertex colours and 1/w (in.bary and in.depth are left
-// alone: the frame's kernels take them from the triangle); inline, so each kernel target
-// compiles it with its own instructions.
-// The level bounds alone (the kernels set up the planes with shade/planes_over_w-inl.h).
+// The level bounds from the vertex colours; inline, so each kernel target compiles it with its
+// own instructions.
 FASTSHADE_FORCE_INLINE void set_gouraud_levels(GouraudSpanInput& in, const glm::vec3 color[3]) {
   for (int c = 0; c < 3; ++c) {
     // Pairwise min and max, not std::minmax or std::clamp: those branch, and mispredict.
@@ -44,6 +42,9 @@ FASTSHADE_FORCE_INLINE void set_gouraud_levels(GouraudSpanInput& in, const glm::
     in.level_hi[c] = 255.0f * std::min(std::max(hi, 0.0f), 1.0f);
   }
 }
+// The level planes and bounds from the vertex colours and 1/w (in.bary and in.depth are left
+// alone: the frame's kernels take them from the triangle). The planes in scalar doubles: the
+// kernel sets up the same bits with PlanesOverW (shade/planes_over_w-inl.h).
 FASTSHADE_FORCE_INLINE void set_gouraud_colors(GouraudSpanInput& in, const Barycentrics& bary, const glm::vec3 color[3],
                                                const float inv_w[3]) {
   for (int c = 0; c < 3; ++c)
