@@ -1,14 +1,35 @@
 // 8-bit RGB images (what the renderer writes) and float images (what compare reads).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <new>
 #include <vector>
 
 namespace fastshade {
 
+// Storage that starts on a cache line. The back end streams whole 64-byte lines of the
+// framebuffer (exec/tile_io.cpp); at 64-pixel tiles and image widths that are multiples of 64
+// every tile row is whole lines, but only if the buffer starts on one. malloc's large blocks
+// start 16 bytes into a page, which left a partial line at both ends of every tile row: copied
+// with ordinary stores, shared with the neighbouring tile (often another thread's).
+template <class T>
+struct CacheLineAllocator {
+  using value_type = T;
+  static constexpr std::align_val_t kAlignment{64};
+  CacheLineAllocator() = default;
+  template <class U>
+  CacheLineAllocator(const CacheLineAllocator<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlignment)); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, kAlignment); }
+  friend bool operator==(const CacheLineAllocator&, const CacheLineAllocator&) { return true; }
+};
+
+using ImageBytes = std::vector<uint8_t, CacheLineAllocator<uint8_t>>;
+
 struct Image {
   int width = 0, height = 0;
-  std::vector<uint8_t> rgb;  // row-major, top row first, 3 bytes a pixel
+  ImageBytes rgb;  // row-major, top row first, 3 bytes a pixel
 };
 
 struct ImageF {

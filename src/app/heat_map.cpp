@@ -39,7 +39,7 @@ Rgb8 heat_colour(int lsb) {
 Image error_heat_map(const Image& image, const Image& reference, Rgb8 background) {
   if (image.width != reference.width || image.height != reference.height)
     throw InputError("heat map", "images differ in size");
-  Image out{image.width, image.height, std::vector<uint8_t>(image.rgb.size())};
+  Image out{image.width, image.height, ImageBytes(image.rgb.size())};
   for (std::size_t p = 0; p < image.rgb.size(); p += 3) {
     int err = 0;
     bool object = false;

@@ -32,9 +32,11 @@ void StreamRow(const uint8_t* src, uint8_t* dst, std::size_t bytes) {
   const std::size_t head =
       std::min(bytes, (kLineBytes - reinterpret_cast<uintptr_t>(dst) % kLineBytes) % kLineBytes);
   const std::size_t body_end = head + (bytes - head) / kLineBytes * kLineBytes;
-  std::memcpy(dst, src, head);
+  // The partial lines are tested for: in a line-aligned framebuffer (include/fastshade/image.h)
+  // a 64-pixel tile's rows have none, and a memcpy of nothing still costs a call.
+  if (head != 0) std::memcpy(dst, src, head);
   for (std::size_t i = head; i < body_end; i += lanes) hn::Stream(hn::LoadU(d8, src + i), d8, dst + i);
-  std::memcpy(dst + body_end, src + body_end, bytes - body_end);
+  if (body_end != bytes) std::memcpy(dst + body_end, src + body_end, bytes - body_end);
 }
 
 void StreamRows(const uint8_t* src, int src_stride_bytes, uint8_t* dst, int dst_stride_bytes,

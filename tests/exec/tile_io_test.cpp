@@ -8,6 +8,7 @@
 
 #include "exec/isa.h"
 #include "exec/tile_io.h"
+#include "fastshade/image.h"
 
 namespace fastshade {
 namespace {
@@ -87,6 +88,15 @@ TEST(TileIo, CountTilePixelsMatchesScalarOnEveryIsaAndWidth) {
   }
   select_isa("best");
   EXPECT_GT(any_path, 0);
+}
+
+// The framebuffer starts on a cache line whatever its size (malloc's large blocks start 16
+// bytes into a page), so 64-pixel tile rows are whole lines for StreamRows.
+TEST(TileIo, ImageBytesStartOnACacheLine) {
+  for (std::size_t bytes : {std::size_t(1), std::size_t(3 * 1280 * 720), std::size_t(3 * 3840 * 2160)}) {
+    const ImageBytes rgb(bytes);
+    EXPECT_EQ(reinterpret_cast<uintptr_t>(rgb.data()) % 64, 0u) << bytes << " bytes";
+  }
 }
 
 }  // namespace
