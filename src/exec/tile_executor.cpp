@@ -102,10 +102,8 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
           TileBuffers& buffers = scratch_->per_thread.local();
           const int stride = grid.tile_px;
           const int w = rect.x1 - rect.x0 + 1;
-          for (int y = 0; y <= rect.y1 - rect.y0; ++y) {
-            std::fill_n(buffers.color.data() + y * stride, w, background);
-            std::fill_n(buffers.depth.data() + y * stride, w, 1.0f);
-          }
+          const int h = rect.y1 - rect.y0 + 1;
+          clear_tile(buffers.color.data(), buffers.depth.data(), stride, background, w, h);
           TileTarget target{buffers.color.data(), buffers.depth.data(), stride, rect.x0,
                             rect.y0, rect, draw.path};
           // A tile whose triangles all take one path runs that path's kernel alone.
@@ -123,7 +121,6 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
             prefetch_ahead(frame, i, end);
             tile_draw(frame, frame.bin_entries[i], target);
           }
-          const int h = rect.y1 - rect.y0 + 1;
           rgba_rows_to_rgb(buffers.color.data(), stride,
                            image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                            image.width * 3, w, h);

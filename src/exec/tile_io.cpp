@@ -70,6 +70,24 @@ void RgbaRowsToRgb(const uint32_t* src, int src_stride_px, uint8_t* dst, int dst
   hwy::FlushStream();
 }
 
+void ClearTile(uint32_t* color, float* depth, int stride_px, uint32_t background, int width, int rows) {
+  const hn::ScalableTag<uint32_t> du;
+  const hn::ScalableTag<float> d;
+  const int lanes = static_cast<int>(hn::Lanes(du));
+  const auto background_px = hn::Set(du, background);
+  const auto cleared = hn::Set(d, 1.0f);
+  for (int y = 0; y < rows; ++y) {
+    uint32_t* c = color + std::ptrdiff_t(y) * stride_px;
+    float* z = depth + std::ptrdiff_t(y) * stride_px;
+    int x = 0;
+    for (; x + lanes <= width; x += lanes) {
+      hn::StoreU(background_px, du, c + x);
+      hn::StoreU(cleared, d, z + x);
+    }
+    for (; x < width; ++x) c[x] = background, z[x] = 1.0f;
+  }
+}
+
 TilePixelCounts CountTilePixels(const float* depth, const uint32_t* color, int stride_px, int width,
                                 int rows, bool by_path) {
   const hn::ScalableTag<float> d;
@@ -103,6 +121,19 @@ namespace fastshade {
 HWY_EXPORT(StreamRows);
 HWY_EXPORT(RgbaRowsToRgb);
 HWY_EXPORT(CountTilePixels);
+HWY_EXPORT(ClearTile);
+
+void clear_tile(uint32_t* color, float* depth, int stride_px, uint32_t background, int width, int rows) {
+  HWY_DYNAMIC_DISPATCH(ClearTile)(color, depth, stride_px, background, width, rows);
+}
+
+void clear_tile_scalar(uint32_t* color, float* depth, int stride_px, uint32_t background, int width,
+                       int rows) {
+  for (int y = 0; y < rows; ++y) {
+    std::fill_n(color + std::ptrdiff_t(y) * stride_px, width, background);
+    std::fill_n(depth + std::ptrdiff_t(y) * stride_px, width, 1.0f);
+  }
+}
 
 TilePixelCounts count_tile_pixels(const float* depth, const uint32_t* color, int stride_px, int width,
                                   int rows, bool by_path) {

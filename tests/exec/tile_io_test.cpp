@@ -90,6 +90,30 @@ TEST(TileIo, CountTilePixelsMatchesScalarOnEveryIsaAndWidth) {
   EXPECT_GT(any_path, 0);
 }
 
+// Clearing a tile: SIMD equals its scalar reference on every ISA for widths 0..2W+1 (W up to 16
+// lanes), and nothing past a row's width changes.
+TEST(TileIo, ClearTileMatchesScalarOnEveryIsaAndWidth) {
+  const int stride = 48, rows = 3;
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    for (int width = 0; width <= 2 * 16 + 1; ++width) {
+      std::vector<uint32_t> color(std::size_t(stride) * rows, 0xABABABABu), color_scalar = color;
+      std::vector<float> depth(color.size(), -3.0f), depth_scalar = depth;
+      clear_tile(color.data(), depth.data(), stride, 0xFF102030u, width, rows);
+      clear_tile_scalar(color_scalar.data(), depth_scalar.data(), stride, 0xFF102030u, width, rows);
+      ASSERT_EQ(color, color_scalar) << isa << " width " << width;
+      ASSERT_EQ(depth, depth_scalar) << isa << " width " << width;
+      for (int y = 0; y < rows; ++y)
+        for (int x = 0; x < stride; ++x) {
+          const std::size_t i = std::size_t(y) * stride + x;
+          ASSERT_EQ(color[i], x < width ? 0xFF102030u : 0xABABABABu) << isa << " width " << width;
+          ASSERT_EQ(depth[i], x < width ? 1.0f : -3.0f) << isa << " width " << width;
+        }
+    }
+  }
+  select_isa("best");
+}
+
 // The framebuffer starts on a cache line whatever its size (malloc's large blocks start 16
 // bytes into a page), so 64-pixel tile rows are whole lines for StreamRows.
 TEST(TileIo, ImageBytesStartOnACacheLine) {
