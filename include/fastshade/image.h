@@ -3,7 +3,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <new>
 #include <vector>
 
 namespace fastshade {
@@ -13,15 +12,19 @@ namespace fastshade {
 // every tile row is whole lines, but only if the buffer starts on one. malloc's large blocks
 // start 16 bytes into a page, which left a partial line at both ends of every tile row: copied
 // with ordinary stores, shared with the neighbouring tile (often another thread's).
+// The block is allocated out of line (src/io/image_bytes.cpp): where GCC 12 sees its size, it
+// reports false -Wstringop-overflow warnings on the vector's element-wise copies.
+void* allocate_cache_lines(std::size_t bytes);
+void free_cache_lines(void* block);
+
 template <class T>
 struct CacheLineAllocator {
   using value_type = T;
-  static constexpr std::align_val_t kAlignment{64};
   CacheLineAllocator() = default;
   template <class U>
   CacheLineAllocator(const CacheLineAllocator<U>&) {}
-  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlignment)); }
-  void deallocate(T* p, std::size_t) { ::operator delete(p, kAlignment); }
+  T* allocate(std::size_t n) { return static_cast<T*>(allocate_cache_lines(n * sizeof(T))); }
+  void deallocate(T* p, std::size_t) { free_cache_lines(p); }
   friend bool operator==(const CacheLineAllocator&, const CacheLineAllocator&) { return true; }
 };
 
