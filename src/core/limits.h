@@ -25,6 +25,11 @@ inline constexpr int kMinTilePx = 8;
 inline constexpr int kMaxTilePx = 256;
 inline constexpr int kDefaultTilePx = 64;
 
+// Cache line of every x86-64 CPU the ISAs target. The framebuffer starts on one (io/
+// image_bytes.cpp) and tile rows are streamed in whole ones (exec/tile_io.cpp): a line written
+// partly by streaming and partly by ordinary stores costs a trip to memory.
+inline constexpr int kCacheLineBytes = 64;
+
 // Attributes are seeded from their plane equation at every aligned block of this many pixels
 // in x and stepped by constant increments inside it (the paper's eq. 1-2, lanes i = seed +
 // i dI): a pixel's value depends only on its position, never on the tile, the span or the

@@ -25,7 +25,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // head aligned to 32-byte vectors on AVX2, that doubled a 1-thread 4K gouraud frame of
 // `render --frames` on a Zen 3 guest, docs/PERFORMANCE.md "Session 7").
 void StreamRow(const uint8_t* src, uint8_t* dst, std::size_t bytes) {
-  constexpr std::size_t kLineBytes = 64;
+  constexpr std::size_t kLineBytes = limits::kCacheLineBytes;
   static_assert(kLineBytes % HWY_MAX_BYTES == 0, "the body loop steps whole vectors through whole lines");
   const hn::ScalableTag<uint8_t> d8;
   const std::size_t lanes = hn::Lanes(d8);

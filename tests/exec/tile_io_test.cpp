@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "core/limits.h"
 #include "exec/isa.h"
 #include "exec/tile_io.h"
 #include "fastshade/image.h"
@@ -119,7 +120,7 @@ TEST(TileIo, ClearTileMatchesScalarOnEveryIsaAndWidth) {
 TEST(TileIo, ImageBytesStartOnACacheLine) {
   for (std::size_t bytes : {std::size_t(1), std::size_t(3 * 1280 * 720), std::size_t(3 * 3840 * 2160)}) {
     const ImageBytes rgb(bytes);
-    EXPECT_EQ(reinterpret_cast<uintptr_t>(rgb.data()) % 64, 0u) << bytes << " bytes";
+    EXPECT_EQ(reinterpret_cast<uintptr_t>(rgb.data()) % limits::kCacheLineBytes, 0u) << bytes << " bytes";
   }
 }
 
