@@ -78,6 +78,13 @@ inline constexpr int kVerticesPerBlock = 4096;
 // over 16 vectors at 16 lanes.
 inline constexpr int kVertexLightBatch = 256;
 
+// `phong` on small triangles: pixels that passed the depth test wait with their normal in the
+// tile's queue (shade/pixel_queue.h) and are lit a full vector at a time. The queue is lit as
+// soon as it holds one vector (at most 16 floats) and a triangle's vector adds at most 16
+// more, so it never holds 32; lighting its last partial vector reads up to 16 past that: 64
+// entries (1 KiB of normals and indices) leave room. Measured in docs/PERFORMANCE.md.
+inline constexpr int kPixelQueueCapacity = 64;
+
 // Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.
 inline constexpr double kMaxShininess = 1e6;
 

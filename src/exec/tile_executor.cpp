@@ -13,6 +13,7 @@
 #include "exec/frame_profile.h"
 #include "exec/tile_io.h"
 #include "shade/lighting.h"
+#include "shade/pixel_queue.h"
 
 namespace fastshade {
 
@@ -21,6 +22,7 @@ namespace {
 struct TileBuffers {  // one worker's scratch, sized for the largest tile, reused across tiles
   std::vector<uint32_t> color;
   std::vector<float> depth;
+  PixelQueue queue;
   TileBuffers() {
     const std::size_t n = std::size_t(limits::kMaxTilePx) * limits::kMaxTilePx + kScratchPadPx;
     color.resize(n);
@@ -106,6 +108,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
           clear_tile(buffers.color.data(), buffers.depth.data(), stride, background, w, h);
           TileTarget target{buffers.color.data(), buffers.depth.data(), stride, rect.x0,
                             rect.y0, rect, draw.path};
+          target.pending = &buffers.queue;
           // A tile whose triangles all take one path runs that path's kernel alone.
           DrawTriangleFn tile_draw = draw.any;
           if (classified) {
@@ -121,6 +124,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
             prefetch_ahead(frame, i, end);
             tile_draw(frame, frame.bin_entries[i], target);
           }
+          light_pending(buffers.queue, target);
           rgba_rows_to_rgb(buffers.color.data(), stride,
                            image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                            image.width * 3, w, h);

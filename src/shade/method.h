@@ -18,6 +18,7 @@ namespace fastshade {
 // Rows are `stride` pixels; (x_origin, y_origin) is the image position of element 0. The
 // buffers carry kScratchPadPx pixels of slack so a vector may read and blend past a row end.
 struct TileTarget;
+struct PixelQueue;
 using DrawTriangleFn = void (*)(const Frame& frame, uint32_t entry, const TileTarget& target);
 
 struct TileTarget {
@@ -30,6 +31,9 @@ struct TileTarget {
   // (XORed into 0xFF: a pixel drawn on path p keeps alpha p, for the per-path pixel counts).
   const DrawTriangleFn* path_draw = nullptr;
   uint32_t alpha_xor = 0;
+  // The worker's queue of pixels waiting to be lit (shade/pixel_queue.h), lit before the tile
+  // is written out; null where a caller provides none (a draw then stores every pixel at once).
+  PixelQueue* pending = nullptr;
 };
 inline constexpr int kScratchPadPx = 64;
 inline constexpr uint32_t path_alpha_xor(ShadePath p) { return (0xFFu ^ static_cast<uint32_t>(p)) << 24; }

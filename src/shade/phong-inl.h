@@ -1,4 +1,4 @@
-// Phong's per-pixel colour as SIMD (per-target, Highway "-inl.h"), shared by the phong and
+// Phong's per-triangle drawing as SIMD (per-target, Highway "-inl.h"), shared by the phong and
 // hybrid kernels.
 #if defined(FASTSHADE_SHADE_PHONG_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FASTSHADE_SHADE_PHONG_INL_H_
@@ -11,92 +11,16 @@
 
 #include <hwy/highway.h>
 
-#include "core/dot3-inl.h"
-#include "shade/brdf-inl.h"
 #include "shade/method.h"
 #include "shade/methods.h"
+#include "shade/phong_color-inl.h"
+#include "shade/pixel_queue-inl.h"
 #include "shade/planes_over_w-inl.h"
 #include "shade/span_loop-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
-
-// Scales (x, y, z) to unit length; a zero vector (or one too short for InvSqrt) becomes zero.
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE void Normalize(D d, V& x, V& y, V& z) {
-  const V len2 = Dot3<D>(x, y, z, x, y, z);
-  const V inv = hn::IfThenElseZero(hn::Ge(len2, hn::Set(d, fast_math::kMinInvSqrtInput)), InvSqrt(d, len2));
-  x = hn::Mul(x, inv);
-  y = hn::Mul(y, inv);
-  z = hn::Mul(z, inv);
-}
-
-template <class D>
-struct ColorVecs {
-  hn::Vec<D> r, g, b;
-};
-
-// Blinn-Phong at the lanes' pixels before quantisation; phong_color_scalar() is its twin.
-// kSpecular = false: the diffuse-only colour (`auto`'s per-pixel diffuse path).
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, class D, class V = hn::Vec<D>>
-HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
-                                             const LaneOffsets<D>& o);
-
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, class D>
-HWY_INLINE ColorVecs<D> PhongColor(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
-  using V = hn::Vec<D>;
-  V nx = EvalPlane(d, in.n[0], o), ny = EvalPlane(d, in.n[1], o), nz = EvalPlane(d, in.n[2], o);
-  Normalize(d, nx, ny, nz);
-  return PhongColorFromNormal<kLocal, kBrdf, kSpecular>(d, in, nx, ny, nz, o);
-}
-
-// Blinn-Phong for unit normals in lanes; phong_color_from_normal_scalar() is its twin.
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular, class D, class V>
-HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
-                                             const LaneOffsets<D>& o) {
-  const MaterialConstants& m = *in.material;
-  const ShadeConstants& k = *in.shade;
-  V vx, vy, vz;  // toward the eye (local viewer only)
-  if constexpr (kLocal && kSpecular) {
-    const V w = hn::Div(hn::Set(d, 1.0f), EvalPlane(d, in.inv_w, o));
-    vx = hn::Neg(hn::Mul(EvalPlane(d, in.p[0], o), w));
-    vy = hn::Neg(hn::Mul(EvalPlane(d, in.p[1], o), w));
-    vz = hn::Neg(hn::Mul(EvalPlane(d, in.p[2], o), w));
-    Normalize(d, vx, vy, vz);
-  }
-  V r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
-  for (const LightView& light : k.lights) {
-    const V lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
-            lz = hn::Set(d, light.l_view.z);
-    const V diffuse = hn::Max(Dot3<D>(nx, ny, nz, lx, ly, lz), hn::Zero(d));
-    V specular = hn::Zero(d);
-    if constexpr (kSpecular) {
-      V hx, hy, hz;
-      if constexpr (kLocal) {
-        hx = hn::Add(lx, vx);
-        hy = hn::Add(ly, vy);
-        hz = hn::Add(lz, vz);
-        Normalize(d, hx, hy, hz);
-      } else {
-        hx = hn::Set(d, light.h_view.x);
-        hy = hn::Set(d, light.h_view.y);
-        hz = hn::Set(d, light.h_view.z);
-      }
-      specular = Brdf<kBrdf>(d, Dot3<D>(nx, ny, nz, hx, hy, hz), m.lobe);
-    }
-    auto channel = [&](V acc, int c) {
-      const V kd_diffuse = hn::Mul(hn::Set(d, m.kd[c]), diffuse);
-      // Diffuse only: no ks * 0 term, so no cost (the sum is the same: x + 0 = x).
-      const V lit = kSpecular ? hn::Add(kd_diffuse, hn::Mul(hn::Set(d, m.ks[c]), specular)) : kd_diffuse;
-      return hn::Add(acc, hn::Mul(hn::Set(d, light.color[c]), lit));
-    };
-    r = channel(r, 0);
-    g = channel(g, 1);
-    b = channel(b, 2);
-  }
-  return {r, g, b};
-}
 
 // The normal planes (and, for a local viewer, position and 1/w planes) of a binned triangle:
 // attributes over w, linear in screen space. Back faces of two-sided scenes flip the normal.
@@ -133,9 +57,19 @@ HWY_INLINE bool ShadesInDouble(const Frame& frame, uint32_t entry) {
 }
 
 // `phong` for one binned triangle in a tile; kSpecular = false: `auto`'s per-pixel diffuse.
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
+// kQueued (a viewer at infinity): the lanes of small triangles wait in the tile's pixel queue
+// and are lit a full vector at a time (shade/pixel_queue.h); row spans light at once, after
+// whatever waits, so colours still land in draw order.
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, bool kQueued = false>
 void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
-  if (kSpecular && ShadesInDouble(frame, entry)) return draw_reference(frame, entry, tt);
+  static_assert(!(kQueued && (kLocal || !kSpecular)), "the queue holds normals lit by a viewer at infinity");
+  if constexpr (kQueued) {
+    if (!tt.pending) return DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
+  }
+  if (kSpecular && ShadesInDouble(frame, entry)) {
+    if constexpr (kQueued) light_pending(*tt.pending, tt);
+    return draw_reference(frame, entry, tt);
+  }
   TriangleInTile tri;
   if (!place_in_tile(frame.triangle(entry), tt.rect, tri)) return;
   const SetupTriangle& t = *tri.tri;
@@ -150,10 +84,23 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     set_up_phong_planes<kLocal>(frame, entry, t, tri.bary, in);
     ready = true;
   };
-  ShadeTriangle(tri, tt, [&](auto d, const auto& o) {
+  auto shade = [&](auto d, const auto& o) {
     if (!ready) set_up();
+    if constexpr (kQueued) {
+      if (tt.pending->count > 0) LightQueue<kSrgb, kBrdf>(*tt.pending, tt, true);
+    }
     return PhongShade<kLocal, kSrgb, kBrdf, kSpecular>(d, in, o);
-  });
+  };
+  if constexpr (kQueued) {
+    auto defer = [&](auto d, auto pass, auto z, const auto& o, const int32_t* lane_at) {
+      if (!ready) set_up();
+      EnqueuePassed<kSrgb, kBrdf>(d, pass, z, EvalPlane(d, in.n[0], o), EvalPlane(d, in.n[1], o),
+                                  EvalPlane(d, in.n[2], o), lane_at, in, tt);
+    };
+    ShadeTriangle(tri, tt, Deferring<decltype(shade), decltype(defer)>{shade, defer});
+  } else {
+    ShadeTriangle(tri, tt, shade);
+  }
 }
 
 // The frame of the span-run methods (hybrid, --normals): triangles narrower than min_width_px

@@ -10,6 +10,7 @@
 #include "shade/brdf_variants.h"
 #include "shade/methods.h"
 #include "shade/phong-inl.h"
+#include "shade/pixel_queue.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
@@ -21,8 +22,15 @@ void PhongSpanVariant(const PhongSpanInput& in, int py, int x0, int x1, RowTarge
             [&](auto d, const auto& o) { return PhongShade<kLocal, kSrgb, kBrdf>(d, in, o); });
 }
 
+// The `phong` method's draw: with a viewer at infinity, small triangles' pixels wait in the
+// tile's queue to be lit a full vector at a time (shade/pixel_queue.h).
+template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+void DrawPhongMethod(const Frame& frame, uint32_t entry, const TileTarget& tt) {
+  DrawPhong<kLocal, kSrgb, kBrdf, true, !kLocal>(frame, entry, tt);
+}
+
 using PhongSpanFn = void (*)(const PhongSpanInput&, int, int, int, RowTarget);
-FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhong, DrawPhong, DrawTriangleFn)
+FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhong, DrawPhongMethod, DrawTriangleFn)
 FASTSHADE_DEFINE_VARIANT_PICKER(PickPhongSpan, PhongSpanVariant, PhongSpanFn)
 
 // Diffuse only: no half vector, so neither the viewer nor the lobe matters.
@@ -35,6 +43,13 @@ void PhongSpan(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) 
   PickPhongSpan(in.shade->local_viewer, in.shade->srgb, in.material->lobe.kind)(in, py, x0, x1, row);
 }
 
+void LightPixelQueue(PixelQueue& queue, const TileTarget& target, bool all) {
+  with_brdf_kind(queue.material->lobe.kind, [&](auto kind) {
+    if (queue.shade->srgb) LightQueue<true, decltype(kind)::value>(queue, target, all);
+    else LightQueue<false, decltype(kind)::value>(queue, target, all);
+  });
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace fastshade
 HWY_AFTER_NAMESPACE();
@@ -45,6 +60,7 @@ namespace fastshade {
 HWY_EXPORT(SelectPhong);
 HWY_EXPORT(PhongSpan);
 HWY_EXPORT(SelectPhongDiffuse);
+HWY_EXPORT(LightPixelQueue);
 
 AttrNeeds phong_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};
@@ -61,6 +77,10 @@ DrawTriangleFn select_phong_diffuse(const ShadeConstants& shade) {
 
 void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
   HWY_DYNAMIC_DISPATCH(PhongSpan)(in, py, x0, x1, row);
+}
+
+void light_pixel_queue(PixelQueue& queue, const TileTarget& target, bool all) {
+  HWY_DYNAMIC_DISPATCH(LightPixelQueue)(queue, target, all);
 }
 
 }  // namespace fastshade

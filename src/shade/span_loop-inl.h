@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <type_traits>
 
 #include <hwy/highway.h>
 
@@ -178,6 +179,23 @@ HWY_INLINE void StorePassed(D d, hn::Mask<D> pass, V z, VU rgba, const int32_t* 
   }
 }
 
+// A shader whose lanes may wait to be lit with other triangles' (shade/pixel_queue-inl.h):
+// ShadeLanes hands defer(d, pass, z, offsets, lane_at) the lanes that passed the depth test
+// instead of shading and storing them; row spans still call shade(d, offsets) and store at once.
+template <typename ShadeFn, typename DeferFn>
+struct Deferring {
+  ShadeFn& shade;
+  DeferFn& defer;
+  template <class D, class O>
+  HWY_INLINE auto operator()(D d, const O& o) const {
+    return shade(d, o);
+  }
+};
+template <typename T>
+inline constexpr bool kIsDeferring = false;
+template <typename S, typename F>
+inline constexpr bool kIsDeferring<Deferring<S, F>> = true;
+
 // Covered pixels already in the first `count` lanes (lane_px, lane_py; lane_at their tile
 // index and lane_z its depth; the arrays are a whole vector long): planes, depth test and
 // shading of one vector, for ShadePackedWith and ShadeBox.
@@ -192,7 +210,8 @@ HWY_INLINE void ShadeLanes(D d, TriangleInTile& tri, const TileTarget& tt, const
   const auto z = EvalPlane(d, tri.depth, o);
   const auto pass = hn::And(hn::FirstN(d, count), hn::Lt(z, hn::Load(d, lane_z)));
   if (hn::AllFalse(d, pass)) return;
-  StorePassed(d, pass, z, shade(d, o), lane_at, tt);
+  if constexpr (kIsDeferring<std::remove_cvref_t<ShadeFn>>) shade.defer(d, pass, z, o, lane_at);
+  else StorePassed(d, pass, z, shade(d, o), lane_at, tt);
 }
 
 // A narrow triangle's covered pixels, packed into lanes whatever their row: a 6-pixel

@@ -7,6 +7,7 @@
 #include "shade/method.h"
 #include "shade/hybrid.h"
 #include "shade/normal_blocks.h"
+#include "shade/pixel_queue.h"
 #include "shade/span_kernels.h"
 
 namespace fastshade {
@@ -56,6 +57,24 @@ PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o) {
   const float len2 = (nx * nx + ny * ny) + nz * nz;
   const float inv_len = len2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(len2) : 0.0f;
   return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o);
+}
+
+void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
+  PhongSpanInput in;
+  in.material = q.material;
+  in.shade = q.shade;
+  const PixelOffsets unused{};  // only a local viewer reads the pixel's offsets
+  const bool srgb = q.shade->srgb;
+  for (int i = 0; i < q.count; ++i) {
+    const float nx = q.nx[i], ny = q.ny[i], nz = q.nz[i];
+    const float len2 = (nx * nx + ny * ny) + nz * nz;
+    const float inv_len = len2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(len2) : 0.0f;
+    const PhongColor c = phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, unused);
+    tt.color[q.at[i]] = pack_rgba(quantize_like_simd(c.c[0], srgb), quantize_like_simd(c.c[1], srgb),
+                                  quantize_like_simd(c.c[2], srgb)) ^
+                        tt.alpha_xor;
+  }
+  q.count = 0;
 }
 
 PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
