@@ -13,6 +13,9 @@ void draw_by_path(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadePath path = Frame::path_of(frame.triangle(entry));
   TileTarget tagged = tt;
   tagged.alpha_xor = path_alpha_xor(path);
+  // The paths store at once: no pixel waits in the tile's queue (shade/pixel_queue.h) to be
+  // overwritten by a later triangle of another path, or tagged with the tile's alpha.
+  tagged.pending = nullptr;
   tt.path_draw[static_cast<int>(path)](frame, entry, tagged);
 }
 
