@@ -1,7 +1,9 @@
 // The pixel queue (shade/pixel_queue.h): SIMD lighting equals its scalar reference on every
 // ISA, every BRDF and sRGB or not, for queue lengths 0..2W+1 (W up to 16), colours land in the
 // order the entries came (a pixel queued twice keeps the later colour), and lighting whole
-// vectors first, then the rest, ends where lighting all at once does.
+// vectors first, then the rest, ends where lighting all at once does; in whole frames, pixels
+// that wait are never left over a later triangle's (draw order with row spans, materials and
+// the double-precision fallback in one tile).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -10,6 +12,9 @@
 #include <glm/geometric.hpp>
 
 #include "exec/isa.h"
+#include "fastshade/compare.h"
+#include "fastshade/render.h"
+#include "fastshade/scene.h"
 #include "shade/brdf.h"
 #include "shade/method.h"
 #include "shade/pixel_queue.h"
@@ -110,6 +115,47 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
     }
   }
   select_isa("best");
+}
+
+
+// Sub-pixel triangles (queued) under a large quad drawn after them (row spans, stored at
+// once) under a second fine sphere of another material, and a material shaded in double:
+// were a waiting pixel lit after a later triangle stored its colour, the quad would show the
+// sphere's colour, tens of LSB from `reference`; phong's own bound is 1 LSB.
+TEST(PixelQueue, WholeFramesKeepDrawOrderAgainstReference) {
+  const Scene scene = parse_scene(R"({
+    "image": {"width": 256, "height": 192, "background": [0, 0, 0]},
+    "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fovy_deg": 45, "near": 0.5, "far": 20},
+    "ambient": [0.05, 0.05, 0.05],
+    "lights": [{"direction": [0.3, 0.5, 1], "color": [1, 1, 1], "space": "view"}],
+    "materials": {
+      "red": {"diffuse": [0.8, 0.1, 0.1], "specular": 0.4, "shininess": 20},
+      "blue": {"diffuse": [0.1, 0.2, 0.9], "specular": 0.5, "shininess": 60},
+      "sharp": {"diffuse": [0.2, 0.7, 0.2], "specular": 0.5, "shininess": 100000}
+    },
+    "objects": [
+      {"primitive": "icosphere", "subdivisions": 6, "radius": 1, "material": "red"},
+      {"primitive": "plane", "size": 1.2, "material": "blue",
+       "transform": {"rotate_deg": [90, 0, 0], "translate": [0.4, 0, 1.2]}},
+      {"primitive": "icosphere", "subdivisions": 5, "radius": 0.25, "material": "sharp",
+       "transform": {"translate": [0.3, 0.3, 1.5]}},
+      {"primitive": "icosphere", "subdivisions": 5, "radius": 0.3, "material": "red",
+       "transform": {"translate": [-0.6, -0.4, 1.3]}}
+    ]
+  })", "pixel queue order", ".");
+  RenderOptions ref_options;
+  ref_options.method = "reference";
+  const ImageF reference = to_float(render(scene, ref_options));
+  for (int threads : {1, 2})
+    for (int tile : {8, 64, 256}) {
+      RenderOptions o;
+      o.method = "phong";
+      o.threads = threads;
+      o.tile_px = tile;
+      const ImageDiff diff = compare_images(to_float(render(scene, o)), reference);
+      EXPECT_LE(diff.max_abs_lsb, 1.0) << "threads " << threads << " tile " << tile << ": worst at ("
+                                       << diff.worst_x << ", " << diff.worst_y << ")";
+    }
 }
 
 }  // namespace
