@@ -52,11 +52,20 @@ void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, 
   }
 }
 
-PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o) {
-  float nx = plane_at(in.n[0], o), ny = plane_at(in.n[1], o), nz = plane_at(in.n[2], o);
+namespace {
+
+// The interpolated normal (n/w, any length) normalised as the kernels' Normalize does, then lit.
+PhongColor phong_color_from_plane_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
+                                                const PixelOffsets& o) {
   const float len2 = (nx * nx + ny * ny) + nz * nz;
   const float inv_len = len2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(len2) : 0.0f;
   return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o);
+}
+
+}  // namespace
+
+PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o) {
+  return phong_color_from_plane_normal_scalar(in, plane_at(in.n[0], o), plane_at(in.n[1], o), plane_at(in.n[2], o), o);
 }
 
 void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
@@ -66,10 +75,7 @@ void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
   const PixelOffsets unused{};  // only a local viewer reads the pixel's offsets
   const bool srgb = q.shade->srgb;
   for (int i = 0; i < q.count; ++i) {
-    const float nx = q.nx[i], ny = q.ny[i], nz = q.nz[i];
-    const float len2 = (nx * nx + ny * ny) + nz * nz;
-    const float inv_len = len2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(len2) : 0.0f;
-    const PhongColor c = phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, unused);
+    const PhongColor c = phong_color_from_plane_normal_scalar(in, q.nx[i], q.ny[i], q.nz[i], unused);
     tt.color[q.at[i]] = pack_rgba(quantize_like_simd(c.c[0], srgb), quantize_like_simd(c.c[1], srgb),
                                   quantize_like_simd(c.c[2], srgb)) ^
                         tt.alpha_xor;
