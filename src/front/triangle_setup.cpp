@@ -1,23 +1,17 @@
 #include "front/triangle_setup.h"
 
 #include <algorithm>
+#include <bit>
 
 #include <glm/geometric.hpp>
 
 #include "frame/edge_function.h"
 #include "front/clip.h"
+#include "front/triangle_fate.h"
 
 namespace fastshade {
 
 namespace {
-
-bool covers_centre(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int px, int py) {
-  const int64_t x = pixel_centre_fx(px), y = pixel_centre_fx(py);
-  auto edge = [](const ScreenVertex& p, const ScreenVertex& q) {  // doubled coordinates
-    return make_edge(2 * int64_t(p.x_fx), 2 * int64_t(p.y_fx), 2 * int64_t(q.x_fx), 2 * int64_t(q.y_fx));
-  };
-  return edge(b, c).covers(x, y) && edge(c, a).covers(x, y) && edge(a, b).covers(x, y);
-}
 
 class ChunkBuilder {
  public:
@@ -58,62 +52,63 @@ class ChunkBuilder {
       run = end;
     }
   }
-  static constexpr uint32_t kPlanBlock = 256;  // source triangles planned at once (18 KB of normals)
+  // Source triangles planned at once (18 KB of normals), and decided at once in lanes.
+  static constexpr uint32_t kPlanBlock = kFateBlock;
 
-  // Culls, winds and bounds one triangle of snapped vertices.
+  // Culls, winds and bounds one triangle of snapped vertices (a clipped piece).
   void emit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t attr_a,
             uint32_t attr_b, uint32_t attr_c, uint16_t material) {
-    const int64_t area = (int64_t(b.x_fx) - a.x_fx) * (int64_t(c.y_fx) - a.y_fx) -
-                         (int64_t(c.x_fx) - a.x_fx) * (int64_t(b.y_fx) - a.y_fx);
-    if (area == 0) {
-      ++chunk_.dropped;
-      return;
-    }
-    // GL's front face is counter-clockwise with y up, i.e. negative area with y down.
-    const bool back_facing = area > 0;
-    if (back_facing && p_.cull == Cull::Back) {
-      ++chunk_.culled;
-      return;
-    }
-    // Pixel centres px + 0.5 inside the fixed-point bounding box, clamped to the image.
-    const int32_t half = limits::kSubpixelOne / 2;
-    const int32_t px0 = std::max(
-        (std::min({a.x_fx, b.x_fx, c.x_fx}) - half + limits::kSubpixelOne - 1) >> limits::kSubpixelBits, 0);
-    const int32_t py0 = std::max(
-        (std::min({a.y_fx, b.y_fx, c.y_fx}) - half + limits::kSubpixelOne - 1) >> limits::kSubpixelBits, 0);
-    const int32_t px1 = std::min((std::max({a.x_fx, b.x_fx, c.x_fx}) - half) >> limits::kSubpixelBits,
-                                 p_.viewport.width - 1);
-    const int32_t py1 = std::min((std::max({a.y_fx, b.y_fx, c.y_fx}) - half) >> limits::kSubpixelBits,
-                                 p_.viewport.height - 1);
-    if (px0 > px1 || py0 > py1) {  // covers no pixel centre
-      ++chunk_.culled;
-      return;
-    }
+    const TriangleDecision t = decide_triangle(a, b, c, p_.viewport.width, p_.viewport.height, p_.cull == Cull::Back);
+    if (t.fate == TriangleFate::kDropped) ++chunk_.dropped;
+    else if (t.fate == TriangleFate::kCulled) ++chunk_.culled;
+    else append(a, b, c, attr_a, attr_b, attr_c, material, t.fate == TriangleFate::kBack, t.box);
+  }
+
+  // The kept triangles of unclipped source triangles decided in lanes, in order: source[i] is
+  // the input triangle in column i, of the plan block that starts at plan_first.
+  void emit_columns(const SceneGeometry& g, const ScreenVertex* screen, const TriangleColumns& columns,
+                    const uint32_t* source, int count, uint32_t plan_first, const ShadePath* planned,
+                    const uint64_t* planned_lights) {
+    TriangleFates fates;
+    decide_triangles(columns, count, p_.viewport.width, p_.viewport.height, p_.cull == Cull::Back, fates);
+    chunk_.dropped += fates.dropped;
+    chunk_.culled += fates.culled;
+    for (int word = 0; word * 64 < count; ++word)
+      for (uint64_t bits = fates.kept[word]; bits; bits &= bits - 1) {
+        const int i = word * 64 + std::countr_zero(bits);
+        const auto& idx = g.triangles[source[i]];
+        const uint16_t material = g.triangle_material[source[i]];
+        const uint32_t slot = source[i] - plan_first;
+        begin_source(idx.data(), material, planned[slot], planned_lights[slot]);
+        const bool back_facing = (fates.back[word] >> (i % 64)) & 1;
+        append(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2], material, back_facing,
+               {fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]});
+      }
+  }
+
+  // Appends a kept triangle's record (and replaces it by its Sierpinski parts if asked).
+  void append(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t attr_a,
+              uint32_t attr_b, uint32_t attr_c, uint16_t material, bool back_facing, const PixelBox& box) {
     // The rasterizer wants positive area: front faces swap their last two vertices.
     const ScreenVertex& v1 = back_facing ? b : c;
     const ScreenVertex& v2 = back_facing ? c : b;
-    // Most triangles of a dense mesh have one candidate pixel centre; test it here, so that
-    // those missing it never reach a bin.
-    if (px0 == px1 && py0 == py1 && !covers_centre(a, v1, v2, px0, py0)) {
-      ++chunk_.culled;
-      return;
-    }
     SetupTriangle t;  // built whole, then appended: emplace_back() would zero the record first
     t.x_fx[0] = a.x_fx, t.x_fx[1] = v1.x_fx, t.x_fx[2] = v2.x_fx;
     t.y_fx[0] = a.y_fx, t.y_fx[1] = v1.y_fx, t.y_fx[2] = v2.y_fx;
     t.depth[0] = a.depth, t.depth[1] = v1.depth, t.depth[2] = v2.depth;
     t.inv_w[0] = a.inv_w, t.inv_w[1] = v1.inv_w, t.inv_w[2] = v2.inv_w;
     t.attr[0] = attr_a, t.attr[1] = back_facing ? attr_b : attr_c, t.attr[2] = back_facing ? attr_c : attr_b;
-    t.px_min[0] = static_cast<int16_t>(px0);
-    t.px_min[1] = static_cast<int16_t>(py0);
-    t.px_max[0] = static_cast<int16_t>(px1);
-    t.px_max[1] = static_cast<int16_t>(py1);
+    t.px_min[0] = static_cast<int16_t>(box.x0);
+    t.px_min[1] = static_cast<int16_t>(box.y0);
+    t.px_max[0] = static_cast<int16_t>(box.x1);
+    t.px_max[1] = static_cast<int16_t>(box.y1);
     t.material = material;
     t.flags = back_facing ? kBackFacing : 0;
     if (p_.classifier)
       t.flags |= static_cast<uint16_t>(static_cast<int>(path(back_facing)) << kShadePathShift);
     chunk_.triangles.push_back(t);
-    if (p_.sierpinski && std::max(px1 - px0, py1 - py0) + 1 >= limits::kSierpinskiMinPx) split_sierpinski();
+    if (p_.sierpinski && std::max(box.x1 - box.x0, box.y1 - box.y0) + 1 >= limits::kSierpinskiMinPx)
+      split_sierpinski();
   }
 
   // The source triangle's path for this facing, classified on first use.
@@ -221,35 +216,48 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   const ScreenVertex* screen = pv.screen.data();
   ShadePath planned[ChunkBuilder::kPlanBlock];
   uint64_t planned_lights[ChunkBuilder::kPlanBlock];
-  for (uint32_t t = first; t < last; ++t) {
-    if ((t - first) % ChunkBuilder::kPlanBlock == 0)
-      builder.plan_paths(g, t, std::min(t + ChunkBuilder::kPlanBlock, last), planned, planned_lights);
-    // The vertices of a dense mesh's triangle sit wherever the mesh put them: fetch those of
-    // the triangle kAhead on (measured on dragon_871k: front end 12.6 -> 11.9 ms).
-    constexpr uint32_t kAhead = 8;
-    if (t + kAhead < last)
-      for (uint32_t v : g.triangles[t + kAhead]) {
-        __builtin_prefetch(flags + v);
-        __builtin_prefetch(screen + v);
+  // The block's unclipped triangles wait as columns until the block ends or a triangle needs
+  // the clipper (whose pieces must follow them: draw order).
+  TriangleColumns columns{};  // zeroed once: lanes past a run's end read defined values
+  uint32_t source[kFateBlock];
+  for (uint32_t block = first; block < last; block += ChunkBuilder::kPlanBlock) {
+    const uint32_t block_end = std::min(block + ChunkBuilder::kPlanBlock, last);
+    builder.plan_paths(g, block, block_end, planned, planned_lights);
+    int run = 0;
+    for (uint32_t t = block; t < block_end; ++t) {
+      // The vertices of a dense mesh's triangle sit wherever the mesh put them: fetch those of
+      // the triangle kAhead on (measured on dragon_871k: front end 12.6 -> 11.9 ms).
+      constexpr uint32_t kAhead = 8;
+      if (t + kAhead < last)
+        for (uint32_t v : g.triangles[t + kAhead]) {
+          __builtin_prefetch(flags + v);
+          __builtin_prefetch(screen + v);
+        }
+      const auto& idx = g.triangles[t];
+      const uint8_t f0 = flags[idx[0]], f1 = flags[idx[1]], f2 = flags[idx[2]];
+      if ((f0 | f1 | f2) & kNonFinite) {
+        ++chunk.dropped;
+        continue;
       }
-    const auto& idx = g.triangles[t];
-    const uint8_t f0 = flags[idx[0]], f1 = flags[idx[1]], f2 = flags[idx[2]];
-    if ((f0 | f1 | f2) & kNonFinite) {
-      ++chunk.dropped;
-      continue;
+      if (f0 & f1 & f2 & kOutcodeMask) {  // all outside one frustum plane
+        ++chunk.culled;
+        continue;
+      }
+      if (!((f0 | f1 | f2) & kNeedsClip)) {
+        for (int v = 0; v < 3; ++v) {
+          columns.x_fx[v][run] = screen[idx[v]].x_fx;
+          columns.y_fx[v][run] = screen[idx[v]].y_fx;
+        }
+        source[run++] = t;
+        continue;
+      }
+      builder.emit_columns(g, screen, columns, source, run, block, planned, planned_lights);
+      run = 0;
+      const uint32_t slot = t - block;
+      builder.begin_source(idx.data(), g.triangle_material[t], planned[slot], planned_lights[slot]);
+      builder.emit_clipped(pv, attrs, idx.data(), g.triangle_material[t]);
     }
-    if (f0 & f1 & f2 & kOutcodeMask) {  // all outside one frustum plane
-      ++chunk.culled;
-      continue;
-    }
-    const uint32_t slot = (t - first) % ChunkBuilder::kPlanBlock;
-    builder.begin_source(idx.data(), g.triangle_material[t], planned[slot], planned_lights[slot]);
-    if (!((f0 | f1 | f2) & kNeedsClip))
-      builder.emit(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2],
-                   g.triangle_material[t]);
-    else
-      builder.emit_clipped(pv, attrs, idx.data(),
-                           g.triangle_material[t]);
+    builder.emit_columns(g, screen, columns, source, run, block, planned, planned_lights);
   }
 }
 
