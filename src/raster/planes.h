@@ -22,8 +22,10 @@ struct Barycentrics {
   double d_dx[3], d_dy[3];  // per pixel
 };
 
-FASTSHADE_FORCE_INLINE Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te) {
-  Barycentrics b;
+// Written in place: returned by value into an existing TriangleInTile, GCC built the struct in
+// a temporary with scalar stores and copied it with one 64-byte load, which cannot be forwarded
+// from those stores: a tenth of dragon_871k's per-triangle body (perf, session 12).
+FASTSHADE_FORCE_INLINE void set_barycentrics(const SetupTriangle& t, const TriangleEdges& te, Barycentrics& b) {
   // The anchor: the first pixel centre of the whole triangle's box (as triangle setup bounds
   // it, so a whole triangle's record holds it already), so that the parts of a split triangle
   // evaluate their parent's planes bit for bit.
@@ -42,6 +44,10 @@ FASTSHADE_FORCE_INLINE Barycentrics barycentrics(const SetupTriangle& t, const T
     b.d_dx[k] = static_cast<double>(te.e[k].a * kEdgeUnitsPerPixel) * inv_area;
     b.d_dy[k] = static_cast<double>(te.e[k].b * kEdgeUnitsPerPixel) * inv_area;
   }
+}
+inline Barycentrics barycentrics(const SetupTriangle& t, const TriangleEdges& te) {
+  Barycentrics b;
+  set_barycentrics(t, te, b);
   return b;
 }
 

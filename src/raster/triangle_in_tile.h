@@ -22,7 +22,7 @@ struct TriangleInTile {
 
   FASTSHADE_FORCE_INLINE void set_up_planes() {
     if (has_planes) return;
-    bary = barycentrics(*tri, sierpinski_part(*tri) ? shape_edges(*tri) : edges);
+    set_barycentrics(*tri, sierpinski_part(*tri) ? shape_edges(*tri) : edges, bary);
     depth = make_plane(bary, tri->depth[0], tri->depth[1], tri->depth[2]);
     has_planes = true;
   }
