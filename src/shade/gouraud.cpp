@@ -6,7 +6,6 @@
 #define HWY_TARGET_INCLUDE "shade/gouraud.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
-#include <algorithm>
 
 #include <hwy/highway.h>
 
@@ -59,10 +58,7 @@ void DrawGouraud(const Frame& frame, uint32_t entry, const TileTarget& tt) {
         color[i] = vertex_color<kSpecular>(-n_view, v_view, !k.local_viewer, k.materials[t.material], k);
       }
     }
-    Plane planes[4];  // set_gouraud_colors' planes, four at once
-    PlanesOverW(tri.bary, color, 255.0, t.inv_w, planes);
-    std::copy(planes, planes + 3, in.level_over_w);
-    in.inv_w = planes[3];
+    PlanesOverW(tri.bary, color, 255.0, t.inv_w, in.level_over_w, in.inv_w);  // set_gouraud_colors' planes
     set_gouraud_levels(in, color);
     ready = true;
   };

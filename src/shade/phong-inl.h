@@ -32,16 +32,14 @@ HWY_INLINE void set_up_phong_planes(const Frame& frame, uint32_t entry, const Se
   // Each vertex's attribute is fetched once (a fetch decodes the clipped-vertex tag), then
   // split into one plane per component (PlanesOverW: make_plane of (scale v) / w, scale +-1,
   // which keeps float(scale v) exact, and of 1/w).
-  auto planes_over_w = [&](AttrField field, float scale, Plane* planes) {
+  auto planes_over_w = [&](AttrField field, float scale, Plane* planes, Plane& one_over_w) {
     glm::vec3 v[3];
     for (int i = 0; i < 3; ++i) v[i] = frame.vertex(entry, t.attr[i], field);
-    Plane all[4];
-    PlanesOverW(bary, v, scale, t.inv_w, all);
-    std::copy(all, all + 3, planes);
-    return all[3];
+    PlanesOverW(bary, v, scale, t.inv_w, planes, one_over_w);
   };
-  planes_over_w(&AttrArrays::n_view, flip, in.n);
-  if constexpr (kLocal) in.inv_w = planes_over_w(&AttrArrays::pos_view, 1.0f, in.p);
+  Plane one_over_w;  // the same plane as the positions' below: only a local viewer reads it
+  planes_over_w(&AttrArrays::n_view, flip, in.n, one_over_w);
+  if constexpr (kLocal) planes_over_w(&AttrArrays::pos_view, 1.0f, in.p, in.inv_w);
 }
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, class D>

@@ -22,25 +22,36 @@ namespace fastshade {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// out[c] = make_plane(b, q0, q1, q2) with q_i = (scale * v_i[c]) * inv_w_i in double for the
-// components c = 0, 1, 2, and out[3] the plane of inv_w itself: the same double operations in
-// the same order (no FMA: -ffp-contract=off), and min/max that keep the first of equal
-// values as std::min({...}) and std::max({...}) do, so a signed zero cannot differ either.
-// A scale of +-1 in float times v, as Phong's normals use it, is exact, so the product in
-// double is the same value.
+// Lanes c, c + 1, ... of (v.x, v.y, v.z, 1), built in registers: stored as four floats and
+// loaded as one vector, they waited on a store that cannot be forwarded (perf, session 12).
+template <class DF>
+HWY_INLINE hn::Vec<DF> ComponentsOf(DF df, const glm::vec3& v, std::size_t c) {
+  const auto lane = hn::Iota(df, static_cast<float>(c));
+  auto out = hn::Set(df, 1.0f);
+  out = hn::IfThenElse(hn::Eq(lane, hn::Set(df, 2.0f)), hn::Set(df, v.z), out);
+  out = hn::IfThenElse(hn::Eq(lane, hn::Set(df, 1.0f)), hn::Set(df, v.y), out);
+  return hn::IfThenElse(hn::Eq(lane, hn::Zero(df)), hn::Set(df, v.x), out);
+}
+
+// components[c] = make_plane(b, q0, q1, q2) with q_i = (scale * v_i[c]) * inv_w_i in double
+// for c = 0, 1, 2, and one_over_w the plane of inv_w itself: the same double operations in the
+// same order (no FMA: -ffp-contract=off), and min/max that keep the first of equal values as
+// std::min({...}) and std::max({...}) do, so a signed zero cannot differ either. A scale of +-1
+// in float times v, as Phong's normals use it, is exact, so the product in double is the same
+// value. The planes are written where the caller keeps them: a copy of a plane array written
+// field by field is another load that store forwarding cannot serve.
 HWY_INLINE void PlanesOverW(const Barycentrics& b, const glm::vec3 v[3], double scale, const float inv_w[3],
-                            Plane out[4]) {
+                            Plane components[3], Plane& one_over_w) {
   const hn::CappedTag<double, 4> d;
   const hn::Rebind<float, decltype(d)> df;
   constexpr std::size_t kQuantities = 4;
-  alignas(32) const float component[3][kQuantities] = {
-      {v[0].x, v[0].y, v[0].z, 1.0f}, {v[1].x, v[1].y, v[1].z, 1.0f}, {v[2].x, v[2].y, v[2].z, 1.0f}};
-  alignas(32) const double lane_scale[kQuantities] = {scale, scale, scale, 1.0};
   alignas(32) float v0[kQuantities], gx[kQuantities], gy[kQuantities], lo[kQuantities], hi[kQuantities];
   for (std::size_t c = 0; c < kQuantities; c += hn::Lanes(d)) {
+    const auto lane_scale = hn::IfThenElse(hn::Lt(hn::Iota(d, static_cast<double>(c)), hn::Set(d, 3.0)),
+                                           hn::Set(d, scale), hn::Set(d, 1.0));
     hn::Vec<decltype(d)> q[3];
     for (int i = 0; i < 3; ++i)
-      q[i] = hn::Mul(hn::Mul(hn::Load(d, lane_scale + c), hn::PromoteTo(d, hn::Load(df, component[i] + c))),
+      q[i] = hn::Mul(hn::Mul(lane_scale, hn::PromoteTo(d, ComponentsOf(df, v[i], c))),
                      hn::Set(d, static_cast<double>(inv_w[i])));
     auto dot = [&](const double* lambda) {
       return hn::Add(hn::Add(hn::Mul(q[0], hn::Set(d, lambda[0])), hn::Mul(q[1], hn::Set(d, lambda[1]))),
@@ -57,7 +68,8 @@ HWY_INLINE void PlanesOverW(const Barycentrics& b, const glm::vec3 v[3], double 
     hn::Store(hn::DemoteTo(df, low), df, lo + c);
     hn::Store(hn::DemoteTo(df, high), df, hi + c);
   }
-  for (std::size_t c = 0; c < kQuantities; ++c) out[c] = {v0[c], gx[c], gy[c], lo[c], hi[c]};
+  for (std::size_t c = 0; c < 3; ++c) components[c] = {v0[c], gx[c], gy[c], lo[c], hi[c]};
+  one_over_w = {v0[3], gx[3], gy[3], lo[3], hi[3]};
 }
 
 }  // namespace HWY_NAMESPACE

@@ -12,7 +12,7 @@ namespace fastshade {
 namespace HWY_NAMESPACE {
 
 void PlanesOverWFn(const Barycentrics& b, const glm::vec3* v, double scale, const float* inv_w, Plane* out) {
-  PlanesOverW(b, v, scale, inv_w, out);
+  PlanesOverW(b, v, scale, inv_w, out, out[3]);
 }
 
 }  // namespace HWY_NAMESPACE
