@@ -24,6 +24,9 @@ struct RenderOptions {
   double spec_threshold = 1.0 / 510.0;
   std::string spec_method = "hybrid";  // auto: the kernel of triangles that may show a highlight
   std::string classifier = "bound";    // auto: bound (error-checked) | paper (the literal rule)
+  // skip: back faces that their own closed (or capped) mesh provably hides are culled at setup
+  // (front/self_occlusion.h); draw: every face is drawn, as a z-buffer without it would
+  std::string hidden_faces = "skip";
   std::string to_string() const;
   bool operator==(const RenderOptions&) const = default;
 };
@@ -56,6 +59,7 @@ struct RenderStats {
   long long triangles_drawn = 0;    // binned (after clipping; a clipped triangle may count more)
   long long triangles_dropped = 0;  // zero area after snapping, or non-finite
   long long triangles_culled = 0;   // outside the frustum, back-facing, or covering no pixel centre
+  long long triangles_hidden = 0;   // of culled: back faces their own mesh provably hides
   long long tiles_total = 0, tiles_nonempty = 0;
   long long covered_pixels = 0;     // pixels any triangle covers (after depth, counted once)
   int threads = 0, tile = 0;

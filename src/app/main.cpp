@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
                 "auto: kernel for triangles that may show a highlight: hybrid (default) or phong");
   r->add_option("--classifier", render.options.classifier,
                 "auto: bound (error-checked, default) or paper (highlight -> specular, rest -> Gouraud)");
+  r->add_option("--hidden-faces", render.options.hidden_faces,
+                "skip (default): cull back faces their own closed mesh provably hides; draw: draw every face");
   r->add_flag("--explain", render.explain, "print the shading plan: paths, and what was left out");
   r->add_option("--config", "render options from a JSON file (fastshade tune writes one); flags given "
                             "here override its keys")

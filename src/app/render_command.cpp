@@ -21,6 +21,7 @@ nlohmann::json stats_json(const RenderStats& s) {
           {"triangles_drawn", s.triangles_drawn},
           {"triangles_dropped", s.triangles_dropped},
           {"triangles_culled", s.triangles_culled},
+          {"triangles_hidden", s.triangles_hidden},
           {"tiles_total", s.tiles_total},
           {"tiles_nonempty", s.tiles_nonempty},
           {"covered_pixels", s.covered_pixels},
@@ -85,10 +86,10 @@ int run_render(const RenderCommand& cmd) {
     write_text_file(cmd.stats_path, json.dump(2) + "\n");
   }
   std::printf(
-      "%s: %dx%d, %s, %lld triangles (%lld drawn, %lld dropped, %lld culled), %d threads, "
-      "tile %d, %s: %.2f ms (front end %.2f, binning %.2f, raster+shade %.2f)%s, %.1f Mpix/s\n",
+      "%s: %dx%d, %s, %lld triangles (%lld drawn, %lld dropped, %lld culled of which %lld hidden), "
+      "%d threads, tile %d, %s: %.2f ms (front end %.2f, binning %.2f, raster+shade %.2f)%s, %.1f Mpix/s\n",
       cmd.output.c_str(), image.width, image.height, stats.method.c_str(), stats.triangles_in,
-      stats.triangles_drawn, stats.triangles_dropped, stats.triangles_culled, stats.threads,
+      stats.triangles_drawn, stats.triangles_dropped, stats.triangles_culled, stats.triangles_hidden, stats.threads,
       stats.tile, stats.isa.c_str(), stats.median.total, stats.median.front_end,
       stats.median.binning, stats.median.raster_shade,
       stats.frames > 1 ? (" median of " + std::to_string(stats.frames)).c_str() : "",

@@ -1,5 +1,6 @@
 // Every limit and magic number of the pipeline, with the reasoning that bounds it.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "fastshade/scene.h"
@@ -45,6 +46,17 @@ inline constexpr int kSierpinskiMinPx = 32;
 // Front-end chunk: triangles per binning chunk. Enough to amortise a chunk's bin headers
 // (one counter per tile), small enough that 2 threads get many chunks on a 70k mesh.
 inline constexpr int kTrianglesPerChunk = 4096;
+
+// Self-occlusion (front/self_occlusion.h). Each of a mesh's rims (boundary loops) costs every
+// back face a box test at setup; a closed mesh has none, the bunny 5, the shared models with
+// many holes (dragon_11k, teapot) a few hundred. Past 256 rims the box tests would cost
+// more than a culled back face saves, so such a mesh is drawn whole.
+inline constexpr std::size_t kMaxOcclusionRims = 256;
+// A connected part whose capped volume (6 V, as a sum of determinants) is below this share of
+// its box's largest side cubed is a flat sheet, with no inside to hide faces in. Rounding of
+// the sum is about 1e-16 relative per term, so 1e-9 is far above it for any mesh below 10^6
+// triangles, and far below the volume of any real solid (a 1000:1 slab is 1e-6).
+inline constexpr double kFlatVolumeRelative = 1e-9;
 
 // `auto`: what of --max-error the float kernels keep for their own rounding. The Gouraud
 // path's colour planes (c/w, 1/w in float, one division) err by a few 1e-7 relative, 1e-4 of

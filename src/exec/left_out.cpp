@@ -24,6 +24,10 @@ std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeCons
                   ": background copied, no bins, no scratch");
   if (f.objects_culled > 0)
     out.push_back(plural(f.objects_culled, "object") + " outside the view frustum: never transformed or set up");
+  if (f.triangles_hidden > 0)
+    out.push_back(plural(f.triangles_hidden, "back face") +
+                  " hidden behind their own closed mesh's front faces: never binned or shaded "
+                  "(--hidden-faces draw keeps them)");
   if (o.method != "auto") return out;
 
   if (k.lights.empty()) {

@@ -15,6 +15,7 @@ struct FrameFacts {
   BackEndCounts back_end;
   long long tiles_total = 0;
   long long objects_culled = 0;  // objects wholly outside the view frustum
+  long long triangles_hidden = 0;  // back faces their own mesh hides (front/self_occlusion.h)
 };
 
 std::vector<std::string> left_out_report(const SceneGeometry& geometry, const ShadeConstants& shade,

@@ -16,6 +16,7 @@
 #include "fastshade/render.h"
 #include "front/binning.h"
 #include "front/scene_geometry.h"
+#include "front/self_occlusion.h"
 #include "front/triangle_setup.h"
 #include "front/vertex_stage.h"
 #include "shade/hybrid.h"
@@ -28,7 +29,7 @@ std::string RenderOptions::to_string() const {
   std::ostringstream s;
   s << "method=" << method << " threads=" << threads << " tile=" << tile_px << " isa=" << isa
     << " srgb=" << (srgb ? "on" : "off") << " brdf=" << brdf << " max_error=" << max_error
-    << " normals=" << normals << " gouraud=" << gouraud;
+    << " normals=" << normals << " gouraud=" << gouraud << " hidden_faces=" << hidden_faces;
   if (method == "auto")
     s << " spec_threshold=" << spec_threshold << " spec_method=" << spec_method
       << " classifier=" << classifier;
@@ -53,6 +54,8 @@ void validate(const RenderOptions& o) {
   parse_normals(o.normals, "--normals");
   if (o.gouraud != "increments" && o.gouraud != "sierpinski")
     throw InputError("--gouraud", "expected increments or sierpinski, got '" + o.gouraud + "'");
+  if (o.hidden_faces != "skip" && o.hidden_faces != "draw")
+    throw InputError("--hidden-faces", "expected skip or draw, got '" + o.hidden_faces + "'");
   if (o.gouraud == "sierpinski" && o.method != "gouraud")
     throw InputError("--gouraud", "sierpinski subtriangles apply to --method gouraud only");
   if (!(o.max_error >= 0 && o.max_error <= 255))
@@ -112,6 +115,8 @@ struct Renderer::Impl {
   TileDraw draw;
   bool classified = false;
   std::optional<Classifier> classifier;
+  std::vector<MeshClosure> closures;  // per object, when hidden faces are skipped
+  SelfOcclusionPlan occlusion;
   WorkerArena arena;
   Frame frame;
   ProjectedVertices vertices;
@@ -141,6 +146,11 @@ struct Renderer::Impl {
     }
     setup.viewport = make_viewport(scene.width, scene.height);
     setup.cull = scene.cull;
+    // Culling back faces would remove an inward-wound mesh's occluders.
+    if (o.hidden_faces == "skip" && scene.cull == Cull::None) {
+      closures = analyze_closures(geometry);
+      setup.occlusion = &occlusion;
+    }
     setup.with_attrs = needs.normal || needs.color || needs.position;
     setup.sierpinski = o.gouraud == "sierpinski";
     const std::size_t chunks =
@@ -168,6 +178,7 @@ struct Renderer::Impl {
       {
         ItemTimer timer(profile ? &profile->vertex_stage_ns : nullptr);
         objects_culled = run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
+        if (setup.occlusion) plan_self_occlusion(geometry, closures, vertices, occlusion);
       }
       const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());
       // Each chunk is counted into its tiles right after its setup, while its records are in
@@ -203,12 +214,13 @@ struct Renderer::Impl {
     stats.threads = arena.threads_available();
     stats.tiles_nonempty = back_end.tiles_nonempty;
     stats.covered_pixels = back_end.covered_pixels;
-    stats.triangles_drawn = stats.triangles_dropped = stats.triangles_culled = 0;
+    stats.triangles_drawn = stats.triangles_dropped = stats.triangles_culled = stats.triangles_hidden = 0;
     PathTally tally;
     for (const Chunk& c : frame.chunks) {
       stats.triangles_drawn += static_cast<long long>(c.triangles.size());
       stats.triangles_dropped += c.dropped;
       stats.triangles_culled += c.culled;
+      stats.triangles_hidden += c.hidden;
       tally.add(c.paths);
     }
     stats.paths.clear();
@@ -216,7 +228,8 @@ struct Renderer::Impl {
       for (int p = 1; p < kShadePathCount; ++p)
         stats.paths.push_back({kShadePathNames[p], tally.triangles[p], back_end.path_pixels[p]});
     stats.left_out = left_out_report(geometry, frame.shade, options,
-                                     {classified ? &tally : nullptr, back_end, stats.tiles_total, objects_culled});
+                                     {classified ? &tally : nullptr, back_end, stats.tiles_total, objects_culled,
+                                      stats.triangles_hidden});
     if (times) *times = t;
     return image;
   }

@@ -68,6 +68,7 @@ struct Chunk {
   std::vector<uint32_t> only_tile;    // per triangle: its one tile, or kSeveralTiles
   std::vector<uint8_t> tile_paths;    // per tile: bit p set if a triangle takes path p (classified frames)
   long long dropped = 0, culled = 0;
+  long long hidden = 0;               // of culled: back faces their own mesh hides (front/self_occlusion.h)
   PathTally paths;                    // what the classifier decided for this chunk's triangles
 };
 

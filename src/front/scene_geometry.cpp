@@ -58,6 +58,8 @@ SceneGeometry flatten_scene(const Scene& scene) {
     ObjectRange range;
     range.first_vertex = static_cast<uint32_t>(g.positions.size());
     range.vertex_count = static_cast<uint32_t>(mesh->positions.size());
+    range.first_triangle = static_cast<uint32_t>(g.triangles.size());
+    range.triangle_count = static_cast<uint32_t>(mesh->triangles.size());
     range.model = o.model;
     range.material = o.material;
     if (!mesh->positions.empty()) {

@@ -14,6 +14,7 @@ namespace fastshade {
 
 struct ObjectRange {
   uint32_t first_vertex = 0, vertex_count = 0;
+  uint32_t first_triangle = 0, triangle_count = 0;
   glm::mat4 model{1.0f};
   int material = 0;
   glm::vec3 box_min{0.0f}, box_max{0.0f};  // object-space bounds of its vertices

@@ -15,8 +15,8 @@ namespace {
 
 class ChunkBuilder {
  public:
-  ChunkBuilder(const SetupParams& p, const AttrArrays& attrs, Chunk& chunk)
-      : p_(p), attrs_(attrs), chunk_(chunk) {}
+  ChunkBuilder(const SetupParams& p, const AttrArrays& attrs, Chunk& chunk, uint32_t first)
+      : p_(p), attrs_(attrs), chunk_(chunk), occlusion_(p.occlusion, first) {}
 
   // The input triangle the next emits come from (its pieces after clipping share its path).
   void begin_source(const uint32_t* idx, uint16_t material, ShadePath planned, uint64_t planned_lights) {
@@ -76,13 +76,18 @@ class ChunkBuilder {
     for (int word = 0; word * 64 < count; ++word)
       for (uint64_t bits = fates.kept[word]; bits; bits &= bits - 1) {
         const int i = word * 64 + std::countr_zero(bits);
+        const bool back_facing = (fates.back[word] >> (i % 64)) & 1;
+        const PixelBox box{fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]};
+        if (occlusion_.hidden(source[i], back_facing, box)) {
+          ++chunk_.culled;
+          ++chunk_.hidden;
+          continue;
+        }
         const auto& idx = g.triangles[source[i]];
         const uint16_t material = g.triangle_material[source[i]];
         const uint32_t slot = source[i] - plan_first;
         begin_source(idx.data(), material, planned[slot], planned_lights[slot]);
-        const bool back_facing = (fates.back[word] >> (i % 64)) & 1;
-        append(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2], material, back_facing,
-               {fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]});
+        append(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2], material, back_facing, box);
       }
   }
 
@@ -194,6 +199,7 @@ class ChunkBuilder {
   const SetupParams& p_;
   const AttrArrays& attrs_;
   Chunk& chunk_;
+  OcclusionCursor occlusion_;  // unclipped triangles only: an object that needs clipping culls none
   const uint32_t* source_ = nullptr;
   uint16_t material_ = 0;
   ShadePath planned_ = ShadePath::Unclassified;
@@ -209,9 +215,9 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   chunk.triangles.clear();
   chunk.clipped.clear();
   chunk.clipped_count = 0;
-  chunk.dropped = chunk.culled = 0;
+  chunk.dropped = chunk.culled = chunk.hidden = 0;
   chunk.paths = {};
-  ChunkBuilder builder(params, attrs, chunk);
+  ChunkBuilder builder(params, attrs, chunk, first);
   const uint8_t* flags = pv.flags.data();
   const ScreenVertex* screen = pv.screen.data();
   ShadePath planned[ChunkBuilder::kPlanBlock];

@@ -8,6 +8,7 @@
 #include "fastshade/scene.h"
 #include "frame/frame.h"
 #include "front/scene_geometry.h"
+#include "front/self_occlusion.h"
 #include "front/vertex_stage.h"
 
 namespace fastshade {
@@ -22,6 +23,8 @@ struct SetupParams {
   // its normals are a subset of the triangle's). Needs the mesh's n_view (and pos_view for
   // a local viewer).
   const Classifier* classifier = nullptr;
+  // This frame's self-occlusion plan: kept back faces that it proves hidden are culled.
+  const SelfOcclusionPlan* occlusion = nullptr;
 };
 
 // Triangles [first, last) of the scene into `chunk` (cleared first, capacity kept).

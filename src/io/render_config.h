@@ -35,6 +35,7 @@ inline constexpr RenderConfigKey kRenderConfigKeys[] = {
     {"brdf", "--brdf", &RenderOptions::brdf, false},
     {"normals", "--normals", &RenderOptions::normals, false},
     {"gouraud", "--gouraud", &RenderOptions::gouraud, false},
+    {"hidden_faces", "--hidden-faces", &RenderOptions::hidden_faces, false},
     {"max_error", "--max-error", &RenderOptions::max_error, false},
     {"spec_threshold", "--spec-threshold", &RenderOptions::spec_threshold, true},
     {"spec_method", "--spec-method", &RenderOptions::spec_method, true},
