@@ -48,9 +48,10 @@ inline constexpr int kSierpinskiMinPx = 32;
 inline constexpr int kTrianglesPerChunk = 4096;
 
 // Self-occlusion (front/self_occlusion.h). Each of a mesh's rims (boundary loops) costs every
-// back face a box test at setup; a closed mesh has none, the bunny 5, the shared models with
-// many holes (dragon_11k, teapot) a few hundred. Past 256 rims the box tests would cost
-// more than a culled back face saves, so such a mesh is drawn whole.
+// back face a box test at setup; a closed mesh has none, the bunny a few (holes underneath).
+// A box test is a few instructions against the hundreds a drawn triangle costs, so 256 rims
+// still cost less than culling saves; a mesh with more (a triangle soup, an unwelded
+// tessellation) is drawn whole.
 inline constexpr std::size_t kMaxOcclusionRims = 256;
 // A connected part whose capped volume (6 V, as a sum of determinants) is below this share of
 // its box's largest side cubed is a flat sheet, with no inside to hide faces in. Rounding of
