@@ -72,6 +72,7 @@ struct Args {
   int threads = 2;
   int frames = 21;
   std::vector<std::string> methods{"phong", "gouraud"};
+  std::string hidden_faces = "skip";  // fastshade's --hidden-faces; llvmpipe draws every face
   std::filesystem::path images;
   std::vector<std::filesystem::path> scenes;
 };
@@ -81,6 +82,7 @@ void run_scene(const std::filesystem::path& scene_path, const Args& args) {
   const std::string name = scene_path.stem().string();
   RenderOptions options;
   options.threads = args.threads;
+  options.hidden_faces = args.hidden_faces;
   options.method = "reference";
   const Image reference_image = render(scene, options);
   const ImageF reference = to_float(reference_image);
@@ -151,6 +153,10 @@ int main(int argc, char** argv) {
   app.add_option("--frames", args.frames, "timed frames per renderer")->check(CLI::Range(1, 10000));
   app.add_option("--method", args.methods, "phong and/or gouraud")
       ->check(CLI::IsMember({"phong", "gouraud"}));
+  app.add_option("--hidden-faces", args.hidden_faces,
+                 "fastshade: skip (its default: back faces a closed mesh hides are culled) or draw "
+                 "(every face, as llvmpipe without culling)")
+      ->check(CLI::IsMember({"skip", "draw"}));
   app.add_option("--images", args.images, "write both renderers' images to this directory")
       ->check(CLI::ExistingDirectory);
   CLI11_PARSE(app, argc, argv);
