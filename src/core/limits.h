@@ -56,7 +56,7 @@ inline constexpr std::size_t kMaxOcclusionRims = 256;
 // A connected part whose capped volume (6 V, as a sum of determinants) is below this share of
 // its box's largest side cubed is a flat sheet, with no inside to hide faces in. Rounding of
 // the sum is about 1e-16 relative per term, so 1e-9 is far above it for any mesh below 10^6
-// triangles, and far below the volume of any real solid (a 1000:1 slab is 1e-6).
+// triangles, and far below that of any real solid (a rod 1000 times longer than thick: 6e-6).
 inline constexpr double kFlatVolumeRelative = 1e-9;
 
 // `auto`: what of --max-error the float kernels keep for their own rounding. The Gouraud

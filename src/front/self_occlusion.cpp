@@ -41,47 +41,61 @@ double det(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
   return glm::dot(a, glm::cross(b, c));
 }
 
-MeshClosure analyze_object(const SceneGeometry& g, const ObjectRange& o) {
-  MeshClosure out;
-  if (o.triangle_count == 0) return out;
-  const auto* tris = &g.triangles[o.first_triangle];
+using Triangle = std::array<uint32_t, 3>;
+using Edge = std::array<uint32_t, 2>;
+
+// The object's rim edges, as their one face traverses them; false if an edge has more than
+// two faces or two that traverse it the same way.
+bool find_rim_edges(const Triangle* tris, uint32_t count, std::vector<Edge>& rim_edges) {
   std::vector<uint64_t> keys;
-  keys.reserve(std::size_t(o.triangle_count) * 3);
-  for (uint32_t t = 0; t < o.triangle_count; ++t)
+  keys.reserve(std::size_t(count) * 3);
+  for (uint32_t t = 0; t < count; ++t)
     for (int e = 0; e < 3; ++e) {
       const uint32_t a = tris[t][e], b = tris[t][(e + 1) % 3];
       if (a != b) keys.push_back(edge_key(a, b));
     }
   tbb::parallel_sort(keys.begin(), keys.end());
 
-  // Rim edges, as the face traverses them; an edge with two faces must be traversed both ways.
-  std::vector<std::array<uint32_t, 2>> rim_edges;
   for (std::size_t i = 0; i < keys.size();) {
     std::size_t j = i + 1;
     while (j < keys.size() && keys[j] >> 1 == keys[i] >> 1) ++j;
-    if (j - i > 2 || (j - i == 2 && keys[i] == keys[i + 1])) return out;  // non-manifold, or misoriented
+    if (j - i > 2 || (j - i == 2 && keys[i] == keys[i + 1])) return false;
     if (j - i == 1) {
       const uint32_t lo = static_cast<uint32_t>(keys[i] >> 32), hi = static_cast<uint32_t>(keys[i] >> 1) & 0x7FFFFFFFu;
-      rim_edges.push_back(keys[i] & 1 ? std::array{hi, lo} : std::array{lo, hi});
+      rim_edges.push_back(keys[i] & 1 ? Edge{hi, lo} : Edge{lo, hi});
     }
     i = j;
   }
+  return true;
+}
 
+// The rims' vertices, rim after rim (a rim: rim edges joined at their vertices).
+void group_rims(const std::vector<Edge>& rim_edges, uint32_t base, uint32_t vertex_count, MeshClosure& out) {
+  DisjointSets rims(vertex_count);
+  for (const Edge& e : rim_edges) rims.join(e[0] - base, e[1] - base);
+  std::vector<std::pair<uint32_t, uint32_t>> by_rim;  // (rim's root, vertex)
+  for (const Edge& e : rim_edges)
+    for (uint32_t v : e) by_rim.push_back({rims.find(v - base), v});
+  std::sort(by_rim.begin(), by_rim.end());
+  by_rim.erase(std::unique(by_rim.begin(), by_rim.end()), by_rim.end());
+  for (std::size_t i = 0; i < by_rim.size(); ++i) {
+    if (i == 0 || by_rim[i].first != by_rim[i - 1].first) out.rim_begin.push_back(static_cast<uint32_t>(i));
+    out.rim_vertices.push_back(by_rim[i].second);
+  }
+  out.rim_begin.push_back(static_cast<uint32_t>(by_rim.size()));
+}
+
+MeshClosure analyze_object(const SceneGeometry& g, const ObjectRange& o) {
+  MeshClosure out;
+  if (o.triangle_count == 0) return out;
+  const Triangle* tris = &g.triangles[o.first_triangle];
+  std::vector<Edge> rim_edges;
+  if (!find_rim_edges(tris, o.triangle_count, rim_edges)) return out;  // non-manifold, or misoriented
   const uint32_t base = o.first_vertex;
-  DisjointSets rims(o.vertex_count);
-  for (const auto& e : rim_edges) rims.join(e[0] - base, e[1] - base);
-  std::vector<uint32_t> rim_vertices;
-  for (const auto& e : rim_edges) rim_vertices.insert(rim_vertices.end(), {e[0], e[1]});
-  std::sort(rim_vertices.begin(), rim_vertices.end());
-  rim_vertices.erase(std::unique(rim_vertices.begin(), rim_vertices.end()), rim_vertices.end());
-  std::stable_sort(rim_vertices.begin(), rim_vertices.end(),
-                   [&](uint32_t a, uint32_t b) { return rims.find(a - base) < rims.find(b - base); });
-  std::vector<uint32_t> rim_begin;
-  for (std::size_t i = 0; i < rim_vertices.size(); ++i)
-    if (i == 0 || rims.find(rim_vertices[i] - base) != rims.find(rim_vertices[i - 1] - base))
-      rim_begin.push_back(static_cast<uint32_t>(i));
-  rim_begin.push_back(static_cast<uint32_t>(rim_vertices.size()));
-  if (rim_begin.size() - 1 > limits::kMaxOcclusionRims) return out;
+  group_rims(rim_edges, base, o.vertex_count, out);
+  const std::vector<uint32_t>& rim_vertices = out.rim_vertices;
+  const std::vector<uint32_t>& rim_begin = out.rim_begin;
+  if (rim_begin.size() - 1 > limits::kMaxOcclusionRims) return {};
 
   // Volumes about the box centre (less cancellation than about the origin), per connected
   // part; each rim's cap is the fan from its centroid, closing the part the rim belongs to.
@@ -118,15 +132,13 @@ MeshClosure analyze_object(const SceneGeometry& g, const ObjectRange& o) {
   int sign = 0;
   for (uint32_t v = 0; v < o.vertex_count; ++v) {
     if (!has_faces[v]) continue;
-    if (!(std::fabs(volume[v]) > flat)) return out;
+    if (!(std::fabs(volume[v]) > flat)) return {};
     const int s = volume[v] > 0 ? 1 : -1;
-    if (sign != 0 && s != sign) return out;
+    if (sign != 0 && s != sign) return {};
     sign = s;
   }
   out.solid = true;
   out.outward = (sign > 0) != (glm::determinant(glm::mat3(o.model)) < 0.0f);
-  out.rim_vertices = std::move(rim_vertices);
-  out.rim_begin = std::move(rim_begin);
   return out;
 }
 
