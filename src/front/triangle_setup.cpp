@@ -27,33 +27,31 @@ class ChunkBuilder {
     path_[0] = path_[1] = ShadePath::Unclassified;
   }
 
-  // Decides in SIMD lanes the paths of source triangles [first, last) (classify/
-  // cone_batch.h): planned[t - first] (and for Specular the lights reported), Unclassified
-  // where classify() must look.
-  void plan_paths(const SceneGeometry& g, uint32_t first, uint32_t last, ShadePath* planned,
+  // Decides in SIMD lanes the paths of source triangles sources[0, count) (classify/
+  // cone_batch.h): planned[i] (and for Specular the lights reported), Unclassified where
+  // classify() must look. Only triangles setup keeps are planned: a dense mesh culls half.
+  void plan_paths(const SceneGeometry& g, const uint32_t* sources, int count, ShadePath* planned,
                   uint64_t* planned_lights) const {
-    std::fill(planned, planned + (last - first), ShadePath::Unclassified);
+    std::fill(planned, planned + count, ShadePath::Unclassified);
     if (!p_.classifier) return;
-    alignas(64) double normals[9][kPlanBlock];
+    alignas(64) double normals[9][kFateBlock];
     NormalsSoA soa;
     for (int k = 0; k < 9; ++k) soa.n[k] = normals[k];
-    for (uint32_t run = first; run < last;) {  // runs of one material
-      const uint16_t material = g.triangle_material[run];
-      uint32_t end = run + 1;
-      while (end < last && g.triangle_material[end] == material) ++end;
+    for (int run = 0; run < count;) {  // runs of one material
+      const uint16_t material = g.triangle_material[sources[run]];
+      int end = run + 1;
+      while (end < count && g.triangle_material[sources[end]] == material) ++end;
       if (const ConeBatchTerms* terms = p_.classifier->cone_batch_terms(material)) {
-        for (uint32_t t = run; t < end; ++t)
+        for (int i = run; i < end; ++i)
           for (int v = 0; v < 3; ++v) {
-            const glm::vec3& n = attrs_.n_view[g.triangles[t][v]];
-            for (int c = 0; c < 3; ++c) normals[3 * v + c][t - run] = n[c];
+            const glm::vec3& n = attrs_.n_view[g.triangles[sources[i]][v]];
+            for (int c = 0; c < 3; ++c) normals[3 * v + c][i - run] = n[c];
           }
-        decide_paths_batch(*terms, soa, end - run, planned + (run - first), planned_lights + (run - first));
+        decide_paths_batch(*terms, soa, end - run, planned + run, planned_lights + run);
       }
       run = end;
     }
   }
-  // Source triangles planned at once (18 KB of normals), and decided at once in lanes.
-  static constexpr uint32_t kPlanBlock = kFateBlock;
 
   // Culls, winds and bounds one triangle of snapped vertices (a clipped piece).
   void emit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t attr_a,
@@ -65,30 +63,40 @@ class ChunkBuilder {
   }
 
   // The kept triangles of unclipped source triangles decided in lanes, in order: source[i] is
-  // the input triangle in column i, of the plan block that starts at plan_first.
+  // the input triangle in column i. Their paths are planned once the survivors are known.
   void emit_columns(const SceneGeometry& g, const ScreenVertex* screen, const TriangleColumns& columns,
-                    const uint32_t* source, int count, uint32_t plan_first, const ShadePath* planned,
-                    const uint64_t* planned_lights) {
+                    const uint32_t* source, int count) {
     TriangleFates fates;
     decide_triangles(columns, count, p_.viewport.width, p_.viewport.height, p_.cull == Cull::Back, fates);
     chunk_.dropped += fates.dropped;
     chunk_.culled += fates.culled;
+    int kept = 0;
+    uint32_t kept_source[kFateBlock];
+    uint16_t kept_column[kFateBlock];
     for (int word = 0; word * 64 < count; ++word)
       for (uint64_t bits = fates.kept[word]; bits; bits &= bits - 1) {
         const int i = word * 64 + std::countr_zero(bits);
         const bool back_facing = (fates.back[word] >> (i % 64)) & 1;
-        const PixelBox box{fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]};
-        if (occlusion_.hidden(source[i], back_facing, box)) {
+        if (occlusion_.hidden(source[i], back_facing, {fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]})) {
           ++chunk_.culled;
           ++chunk_.hidden;
           continue;
         }
-        const auto& idx = g.triangles[source[i]];
-        const uint16_t material = g.triangle_material[source[i]];
-        const uint32_t slot = source[i] - plan_first;
-        begin_source(idx.data(), material, planned[slot], planned_lights[slot]);
-        append(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2], material, back_facing, box);
+        kept_source[kept] = source[i];
+        kept_column[kept++] = static_cast<uint16_t>(i);
       }
+    ShadePath planned[kFateBlock];
+    uint64_t planned_lights[kFateBlock];
+    plan_paths(g, kept_source, kept, planned, planned_lights);
+    for (int k = 0; k < kept; ++k) {
+      const int i = kept_column[k];
+      const auto& idx = g.triangles[kept_source[k]];
+      const uint16_t material = g.triangle_material[kept_source[k]];
+      begin_source(idx.data(), material, planned[k], planned_lights[k]);
+      const bool back_facing = (fates.back[i / 64] >> (i % 64)) & 1;
+      append(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2], material, back_facing,
+             {fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]});
+    }
   }
 
   // Appends a kept triangle's record (and replaces it by its Sierpinski parts if asked).
@@ -220,15 +228,12 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   ChunkBuilder builder(params, attrs, chunk, first);
   const uint8_t* flags = pv.flags.data();
   const ScreenVertex* screen = pv.screen.data();
-  ShadePath planned[ChunkBuilder::kPlanBlock];
-  uint64_t planned_lights[ChunkBuilder::kPlanBlock];
   // The block's unclipped triangles wait as columns until the block ends or a triangle needs
   // the clipper (whose pieces must follow them: draw order).
   TriangleColumns columns{};  // zeroed once: lanes past a run's end read defined values
   uint32_t source[kFateBlock];
-  for (uint32_t block = first; block < last; block += ChunkBuilder::kPlanBlock) {
-    const uint32_t block_end = std::min(block + ChunkBuilder::kPlanBlock, last);
-    builder.plan_paths(g, block, block_end, planned, planned_lights);
+  for (uint32_t block = first; block < last; block += kFateBlock) {
+    const uint32_t block_end = std::min(block + kFateBlock, last);
     int run = 0;
     for (uint32_t t = block; t < block_end; ++t) {
       // The vertices of a dense mesh's triangle sit wherever the mesh put them: fetch those of
@@ -258,13 +263,13 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
         source[run++] = t;
         continue;
       }
-      builder.emit_columns(g, screen, columns, source, run, block, planned, planned_lights);
+      builder.emit_columns(g, screen, columns, source, run);
       run = 0;
-      const uint32_t slot = t - block;
-      builder.begin_source(idx.data(), g.triangle_material[t], planned[slot], planned_lights[slot]);
+      // A clipped triangle (rare) is classified by classify(), which the lanes equal exactly.
+      builder.begin_source(idx.data(), g.triangle_material[t], ShadePath::Unclassified, 0);
       builder.emit_clipped(pv, attrs, idx.data(), g.triangle_material[t]);
     }
-    builder.emit_columns(g, screen, columns, source, run, block, planned, planned_lights);
+    builder.emit_columns(g, screen, columns, source, run);
   }
 }
 
