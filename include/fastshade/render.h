@@ -84,6 +84,9 @@ class Renderer {
   // One frame; `times` receives this frame's stage times. A non-null `profile` (internal, for
   // `fastshade bench scaling`) receives every parallel item's cost; null costs nothing.
   Image render_frame(StageTimes* times = nullptr, FrameProfile* profile = nullptr);
+  // The same into `into`, whose buffer is reused when it has the frame's size: what timed
+  // loops call, so that frames after the first allocate and clear nothing.
+  void render_frame(Image& into, StageTimes* times = nullptr, FrameProfile* profile = nullptr);
   // The counts of the last frame (times filled by the caller's timing policy).
   RenderStats last_stats() const;
 

@@ -118,13 +118,14 @@ ScalingModel model_from(int tile_px, const std::vector<FrameProfile>& one_thread
 void measure_tile(const Scene& scene, const ScalingCommand& cmd, int tile_px,
                   const std::vector<int>& threads, int hardware_threads, ScalingRun& run) {
   std::vector<std::unique_ptr<Renderer>> renderers;
+  std::vector<Image> images(threads.size());  // one per renderer, reused by its frames
   for (const int t : threads) {
     RenderOptions o;
     o.method = cmd.method;
     o.tile_px = tile_px;
     o.threads = t;
     renderers.push_back(std::make_unique<Renderer>(scene, o));
-    renderers.back()->render_frame();  // warm-up: first-touch allocation, caches
+    renderers.back()->render_frame(images[renderers.size() - 1]);  // warm-up: first-touch allocation, caches
   }
   std::vector<std::vector<StageTimes>> times(threads.size());
   std::vector<std::vector<FrameProfile>> profiles(threads.size(), std::vector<FrameProfile>(cmd.frames));
@@ -133,10 +134,10 @@ void measure_tile(const Scene& scene, const ScalingCommand& cmd, int tile_px,
     for (std::size_t i = 0; i < renderers.size(); ++i) {
       const double cpu0 = process_cpu_s();
       const auto wall0 = std::chrono::steady_clock::now();
-      renderers[i]->render_frame(&times[i].emplace_back());
+      renderers[i]->render_frame(images[i], &times[i].emplace_back());
       wall_s[i] += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
       cpu_s[i] += process_cpu_s() - cpu0;
-      renderers[i]->render_frame(nullptr, &profiles[i][f]);
+      renderers[i]->render_frame(images[i], nullptr, &profiles[i][f]);
     }
   for (std::size_t i = 0; i < threads.size(); ++i)
     run.points.push_back({tile_px, threads[i], threads[i] > hardware_threads, stage_medians(times[i]),

@@ -38,7 +38,7 @@ std::vector<Measured> measure_in_rounds(const std::string& scene_name, const Sce
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t i = (k + static_cast<std::size_t>(round)) % n;
       StageTimes t;
-      m[i].image = renderers[i]->render_frame(&t);
+      renderers[i]->render_frame(m[i].image, &t);
       if (round > 0) {
         m[i].total_ms.push_back(t.total);
         m[i].raster_ms.push_back(t.raster_shade);

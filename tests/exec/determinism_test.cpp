@@ -1,6 +1,7 @@
 // The same scene gives a byte-identical image for any thread count and any tile size.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "fastshade/render.h"
@@ -54,6 +55,25 @@ TEST(Determinism, SceneFilesAreByteIdenticalForAnyThreadsAndTiles) {
     ++count;
   }
   EXPECT_EQ(count, 3);
+}
+
+// Timed loops render into one buffer: every pixel must be rewritten, whatever it held.
+TEST(Determinism, AReusedBufferGivesTheFreshImage) {
+  const Scene scene = load_scene(std::filesystem::path(FASTSHADE_SOURCE_DIR) / "scenes" / "spheres.json");
+  RenderOptions o;
+  o.tile_px = 32;
+  Renderer renderer(scene, o);
+  const Image fresh = renderer.render_frame();
+  Image reused = fresh;
+  std::fill(reused.rgb.begin(), reused.rgb.end(), uint8_t{0x5A});  // not the background
+  renderer.render_frame(reused);
+  EXPECT_EQ(reused.rgb, fresh.rgb);
+  Image wrong_size;
+  wrong_size.width = wrong_size.height = 3;
+  wrong_size.rgb.assign(27, 0x5A);
+  renderer.render_frame(wrong_size);
+  EXPECT_EQ(wrong_size.width, fresh.width);
+  EXPECT_EQ(wrong_size.rgb, fresh.rgb);
 }
 
 }  // namespace
