@@ -12,7 +12,8 @@ namespace fastshade {
 // The one options struct that reaches the renderer; printable for logs and stats.
 struct RenderOptions {
   int threads = 0;         // 0 = all hardware threads
-  int tile_px = 64;        // power of two in [kMinTilePx, kMaxTilePx]
+  int tile_px = 64;        // power of two in [kMinTilePx, kMaxTilePx], or 0: sized from the
+                           // image and threads (exec/tile_size.h)
   std::string method = "auto";
   bool srgb = false;       // encode with the sRGB curve before quantising
   std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: a process-wide choice

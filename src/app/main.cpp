@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   r->add_option("scene", render.scene, "scene JSON (docs/scene-format.md); omitted: the default scene");
   r->add_option("-o,--output", render.output, "output image; the extension picks the format")->required();
   r->add_option("--threads", render.options.threads, "worker threads (0 = all)");
-  r->add_option("--tile", render.options.tile_px, "tile size in pixels, a power of two 8..256");
+  r->add_option("--tile", render.options.tile_px,
+                "tile size in pixels, a power of two 8..256 (default 64), or 0: the largest of 128, 64, 32, 16 that gives each thread 32 tiles");
   r->add_option("--method", render.options.method, methods_help);
   r->add_option("--frames", render.frames, "timed frames after one warm-up (medians reported)");
   r->add_option("--stats", render.stats_path, "write statistics as JSON");

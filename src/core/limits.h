@@ -21,10 +21,24 @@ static_assert(kMaxImageSide <= kGuardPx / 2, "the image must sit well inside the
 
 // Tiles: powers of two. 8 px is the smallest block the shading kernels seed from, so tile
 // edges never cut a block; 256 px keeps one tile's colour + depth scratch (256 KiB + 256 KiB)
-// inside a core's L2. Default 64 as llvmpipe (TILE_ORDER 6).
+// inside a core's L2.
 inline constexpr int kMinTilePx = 8;
 inline constexpr int kMaxTilePx = 256;
-inline constexpr int kDefaultTilePx = 64;
+// --tile 0 (exec/tile_size.h) sizes the tile per frame: the largest of kSizedTileMaxPx,
+// kSizedTileMaxPx / 2, ... that still gives every worker kTilesPerWorker tiles, and never
+// below kSizedTileMinPx. Large tiles pay each triangle's per-tile work (placement, planes,
+// the hybrid step, auto's path dispatch) fewer times: on 2 threads 128 px against 64 px took
+// spot 4K auto 2.67 vs 3.38 ms and gouraud 2.09 vs 2.30, bunny auto 4.18 vs 4.40, dragon
+// 21.5 vs 22.2 (docs/PERFORMANCE.md, session 14); 256 px gained nothing more. Many workers
+// need small tiles instead: the load-balance model of docs/SCALING.md puts the 1080p dragon
+// at 7.8x on 8 workers with 64 px (510 tiles) against 7.2x with 128 px (135 tiles), and at
+// 56x on 64 workers with 16 px against 42x with 64 px: the largest tile is the critical
+// path. 32 tiles a worker picks 64 px at 8 workers and 16 px at 64 workers for 1080p, and
+// 128 px on 1 or 2 workers for 1080p and 4K. The default (RenderOptions) stays a fixed 64 px,
+// as the pipeline issue (#2) sets it and llvmpipe fixes it (TILE_ORDER 6).
+inline constexpr int kSizedTileMaxPx = 128;
+inline constexpr int kSizedTileMinPx = 16;
+inline constexpr int kTilesPerWorker = 32;
 
 // Cache line of every x86-64 CPU the ISAs target. The framebuffer starts on one (io/
 // image_bytes.cpp) and tile rows are streamed in whole ones (exec/tile_io.cpp): a line written

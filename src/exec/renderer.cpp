@@ -11,6 +11,7 @@
 #include "exec/isa.h"
 #include "exec/left_out.h"
 #include "exec/tile_executor.h"
+#include "exec/tile_size.h"
 #include "exec/worker_arena.h"
 #include "fastshade/error.h"
 #include "fastshade/render.h"
@@ -27,7 +28,8 @@ namespace fastshade {
 
 std::string RenderOptions::to_string() const {
   std::ostringstream s;
-  s << "method=" << method << " threads=" << threads << " tile=" << tile_px << " isa=" << isa
+  s << "method=" << method << " threads=" << threads << " tile=" << (tile_px ? std::to_string(tile_px) : "auto")
+    << " isa=" << isa
     << " srgb=" << (srgb ? "on" : "off") << " brdf=" << brdf << " max_error=" << max_error
     << " normals=" << normals << " gouraud=" << gouraud << " hidden_faces=" << hidden_faces;
   if (method == "auto")
@@ -39,11 +41,11 @@ std::string RenderOptions::to_string() const {
 void validate(const RenderOptions& o) {
   if (o.threads < 0 || o.threads > 1024)
     throw InputError("--threads", "expected 0 (all) to 1024, got " + std::to_string(o.threads));
-  if (o.tile_px < limits::kMinTilePx || o.tile_px > limits::kMaxTilePx ||
-      (o.tile_px & (o.tile_px - 1)) != 0)
-    throw InputError("--tile", "expected a power of two from " + std::to_string(limits::kMinTilePx) +
-                                   " to " + std::to_string(limits::kMaxTilePx) + ", got " +
-                                   std::to_string(o.tile_px));
+  if (o.tile_px != 0 && (o.tile_px < limits::kMinTilePx || o.tile_px > limits::kMaxTilePx ||
+                         (o.tile_px & (o.tile_px - 1)) != 0))
+    throw InputError("--tile", "expected a power of two from " + std::to_string(limits::kMinTilePx) + " to " +
+                                   std::to_string(limits::kMaxTilePx) +
+                                   ", or 0 (sized from the image and threads), got " + std::to_string(o.tile_px));
   const Method* method = find_method(o.method);
   if (!method) {
     std::string names;
@@ -131,7 +133,8 @@ struct Renderer::Impl {
         xf(view_transform(scene)),
         arena(o.threads) {
     select_isa(o.isa);
-    frame.grid = make_grid(scene.width, scene.height, o.tile_px);
+    frame.grid = make_grid(scene.width, scene.height,
+                           resolve_tile_px(o.tile_px, scene.width, scene.height, arena.threads()));
     frame.shade = shade_constants(scene, xf, o.srgb, parse_brdf(o.brdf, "--brdf"));
     frame.shade.hybrid_tolerance = hybrid_tolerance(o.max_error);
     frame.shade.normals = parse_normals(o.normals, "--normals");
@@ -159,7 +162,7 @@ struct Renderer::Impl {
     stats.triangles_in = static_cast<long long>(geometry.triangles.size());
     stats.tiles_total = frame.grid.tile_count();
     stats.threads = arena.threads();
-    stats.tile = o.tile_px;
+    stats.tile = frame.grid.tile_px;
     stats.method = o.method;
     stats.isa = active_isa();
   }

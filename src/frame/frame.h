@@ -83,8 +83,8 @@ inline constexpr uint32_t bin_entry(uint32_t chunk, uint32_t index) {
 
 struct TileGrid {
   int width = 0, height = 0;  // image, pixels
-  int tile_px = limits::kDefaultTilePx;
-  int tile_shift = 6;         // log2(tile_px)
+  int tile_px = 0;            // set with the image (exec/renderer.cpp)
+  int tile_shift = 0;         // log2(tile_px)
   int tiles_x = 0, tiles_y = 0;
   int tile_count() const { return tiles_x * tiles_y; }
 };

@@ -93,7 +93,7 @@ TEST(RenderConfig, UnknownKeysAreRefusedByName) {
 
 TEST(RenderConfig, BadValuesAreRefusedNamingTheKey) {
   EXPECT_EQ(error_of(R"({"options": {"tile": 48}})"),
-            "tuned.json: options.tile: expected a power of two from 8 to 256, got 48");
+            "tuned.json: options.tile: expected a power of two from 8 to 256, or 0 (sized from the image and threads), got 48");
   EXPECT_EQ(error_of(R"({"options": {"tile": "32"}})"),
             "tuned.json: options.tile: expected an integer in [-2147483648, 2147483647], got \"32\"");
   const auto starts_with = [](const std::string& text, const std::string& start) { return text.starts_with(start); };
