@@ -82,7 +82,9 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     set_up_phong_planes<kLocal>(frame, entry, t, tri.bary, in);
     ready = true;
   };
-  auto shade = [&](auto d, const auto& o) {
+  // Inlined into the span loop, where the planes' constants stay in registers: called per
+  // vector, it reloaded them all (about 25 broadcasts a vector, perf annotate, session 14).
+  auto shade = [&](auto d, const auto& o) __attribute__((always_inline)) {
     if (!ready) set_up();
     if constexpr (kQueued) {
       if (tt.pending->count > 0) LightQueue<kSrgb, kBrdf>(*tt.pending, tt, true);
