@@ -135,8 +135,10 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
     TileTarget target{buffers.color.data(), buffers.depth.data(), stride, rect.x0,
                       rect.y0, rect, draw.path};
     target.pending = &buffers.queue;
-    // A tile whose triangles all take one path runs that path's kernel alone.
+    // A tile whose triangles all take one path runs that path's kernel alone, and every pixel
+    // it draws is that path's: its pixels need no count by path.
     DrawTriangleFn tile_draw = draw.any;
+    int single_path = -1;
     if (classified) {
       const unsigned paths = frame.tile_paths[tile];
       const int only = std::countr_zero(paths);
@@ -144,6 +146,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
         tile_draw = draw.path[only];
         target.alpha_xor = path_alpha_xor(static_cast<ShadePath>(only));
         ++buffers.counts.single_path_tiles;
+        single_path = only;
       }
     }
     for (uint32_t i = begin; i < end; ++i) {
@@ -154,8 +157,9 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
     rgba_rows_to_rgb(buffers.color.data(), stride,
                      image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                      image.width * 3, w, h);
-    const TilePixelCounts tile_counts =
-        count_tile_pixels(buffers.depth.data(), buffers.color.data(), stride, w, h, classified);
+    TilePixelCounts tile_counts = count_tile_pixels(buffers.depth.data(), buffers.color.data(), stride, w, h,
+                                                    classified && single_path < 0);
+    if (single_path >= 0) tile_counts.path[single_path] = tile_counts.covered;
     ++buffers.counts.tiles_nonempty;
     buffers.counts.covered_pixels += tile_counts.covered;
     if (classified)
