@@ -2,20 +2,24 @@
 // triangle's shading path; here each path gets its kernel, chosen once per frame, and a tile
 // whose triangles share one path runs that kernel alone (exec/tile_executor.cpp).
 #include "shade/methods.h"
+#include "shade/pixel_queue.h"
 
 namespace fastshade {
 
 namespace {
 
 // A tile with several paths: each triangle goes to its path's kernel, and its pixels carry
-// the path in their alpha byte (the per-path pixel counts of RenderStats).
+// the path in their alpha byte (the per-path pixel counts of RenderStats). Only the specular
+// path queues small triangles' lanes (shade/pixel_queue.h); the queue is lit, with the tag its
+// entries came with, before a triangle of another path draws, so colours land in draw order.
 void draw_by_path(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadePath path = Frame::path_of(frame.triangle(entry));
   TileTarget tagged = tt;
   tagged.alpha_xor = path_alpha_xor(path);
-  // The paths store at once: no pixel waits in the tile's queue (shade/pixel_queue.h) to be
-  // overwritten by a later triangle of another path, or tagged with the tile's alpha.
-  tagged.pending = nullptr;
+  if (path != ShadePath::Specular) {
+    if (tt.pending) light_pending(*tt.pending, tt);
+    tagged.pending = nullptr;
+  }
   tt.path_draw[static_cast<int>(path)](frame, entry, tagged);
 }
 

@@ -104,8 +104,9 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
 }
 
 // The frame of the span-run methods (hybrid, --normals): triangles narrower than min_width_px
-// (whole box: every tile decides alike) take per-pixel Phong, and materials shaded in double
-// the reference (through DrawPhong); the others walk rows through the
+// (whole box: every tile decides alike) take per-pixel Phong, their lanes queued with a viewer
+// at infinity, and materials shaded in double the reference (through DrawPhong); the others
+// walk rows through the
 // whole triangle, tile rows only, because a row's covered run [xl, xr] fixes where segment or
 // block ends go, whatever tile this is. on_setup(in) runs once, when the first run is found
 // (planes are ready then); run(in, xl, xr, py, x0, x1, row) shades the tile's part [x0, x1];
@@ -119,9 +120,11 @@ HWY_INLINE void DrawByRowRuns(const Frame& frame, uint32_t entry, const TileTarg
                               int min_width_px, OnSetup&& on_setup, Run&& run, Finish&& finish = {}) {
   const SetupTriangle& whole = frame.triangle(entry);
   if (whole.px_max[0] - whole.px_min[0] + 1 < min_width_px || (kSpecular && ShadesInDouble(frame, entry))) {
-    DrawPhong<kLocal, kSrgb, kBrdf, kSpecular>(frame, entry, tt);
+    DrawPhong<kLocal, kSrgb, kBrdf, kSpecular, kSpecular && !kLocal>(frame, entry, tt);
     return;
   }
+  // The narrow triangles' lanes may wait in the tile's queue: they land before this one stores.
+  if (tt.pending) light_pending(*tt.pending, tt);
   TriangleInTile tri;
   if (!prepare_triangle(whole, tt.rect, tri)) return;
   const ShadeConstants& k = frame.shade;

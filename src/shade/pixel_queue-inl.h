@@ -41,7 +41,7 @@ void LightQueue(PixelQueue& q, const TileTarget& tt, bool all) {
     auto nx = hn::Load(d, q.nx + j), ny = hn::Load(d, q.ny + j), nz = hn::Load(d, q.nz + j);
     Normalize(d, nx, ny, nz);
     const ColorVecs<D> c = PhongColorFromNormal<false, kBrdf>(d, in, nx, ny, nz, unused);
-    hn::Store(hn::Xor(PackRGBA<kSrgb>(d, c.r, c.g, c.b), hn::Set(du, tt.alpha_xor)), du, rgba);
+    hn::Store(hn::Xor(PackRGBA<kSrgb>(d, c.r, c.g, c.b), hn::Set(du, q.alpha_xor)), du, rgba);
     const int m = std::min(lanes, n - j);
     for (int i = 0; i < m; ++i) tt.color[q.at[j + i]] = rgba[i];
   }
@@ -66,11 +66,13 @@ template <bool kSrgb, BrdfKind kBrdf, class D, class V = hn::Vec<D>>
 HWY_INLINE void EnqueuePassed(D d, hn::Mask<D> pass, V z, V nx, V ny, V nz, const int32_t* lane_at,
                               const PhongSpanInput& in, const TileTarget& tt) {
   PixelQueue& q = *tt.pending;
-  if (q.material != in.material || q.shade != in.shade || q.light != &LightQueue<kSrgb, kBrdf>) {
+  if (q.material != in.material || q.shade != in.shade || q.light != &LightQueue<kSrgb, kBrdf> ||
+      q.alpha_xor != tt.alpha_xor) {
     if (q.count > 0) LightQueue<kSrgb, kBrdf>(q, tt, true);
     q.material = in.material;
     q.shade = in.shade;
     q.light = &LightQueue<kSrgb, kBrdf>;
+    q.alpha_xor = tt.alpha_xor;
   }
   alignas(64) float lane_z[kMaxLanes];
   hn::Store(z, d, lane_z);

@@ -31,6 +31,9 @@ struct PixelQueue {
   const MaterialConstants* material = nullptr;
   const ShadeConstants* shade = nullptr;
   LightQueueFn light = nullptr;
+  // The tag the entries are stored with (TileTarget::alpha_xor of the triangles that queued
+  // them): `auto` lights the queue before another path draws, with that path's target.
+  uint32_t alpha_xor = 0;
 };
 
 // Lights whatever waits (the tile executor calls it before a tile's colours leave scratch).

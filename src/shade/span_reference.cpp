@@ -78,7 +78,7 @@ void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
     const PhongColor c = phong_color_from_plane_normal_scalar(in, q.nx[i], q.ny[i], q.nz[i], unused);
     tt.color[q.at[i]] = pack_rgba(quantize_like_simd(c.c[0], srgb), quantize_like_simd(c.c[1], srgb),
                                   quantize_like_simd(c.c[2], srgb)) ^
-                        tt.alpha_xor;
+                        q.alpha_xor;
   }
   q.count = 0;
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -40,6 +41,7 @@ void fill(PixelQueue& q, int count, std::mt19937& rng) {
   std::uniform_real_distribution<float> u(-1.5f, 1.5f);
   std::uniform_int_distribution<int> px(0, 63);
   q.count = count;
+  q.alpha_xor = 0x02000000u;  // as QueueCase::target()
   for (int i = 0; i < count; ++i) {
     q.nx[i] = u(rng), q.ny[i] = u(rng), q.nz[i] = u(rng);
     if (i % 7 == 3) q.nx[i] = q.ny[i] = q.nz[i] = 1e-30f;  // below InvSqrt's range: becomes zero
@@ -106,7 +108,10 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
       ASSERT_LT(whole.count, 16) << isa << ": at most a partial vector waits";
       ASSERT_LE(whole.count, count) << isa;
       light_pixel_queue(whole, a.target(), true);
-      light_pixel_queue(q, b.target(), true);
+      // Lit through another path's target (auto does), the entries keep the tag they came with.
+      TileTarget untagged = b.target();
+      untagged.alpha_xor = 0;
+      light_pixel_queue(q, untagged, true);
       ASSERT_EQ(a.color, b.color) << isa << " count " << count;
       if (count >= 2) {
         // Away from the light: ambient only, 0.1 -> level 26, alpha 0xFF ^ 2.
@@ -118,10 +123,13 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
 }
 
 
-// Sub-pixel triangles (queued) under a large quad drawn after them (row spans, stored at
-// once) under a second fine sphere of another material, and a material shaded in double:
+// Sub-pixel triangles (queued) under a large matte quad drawn after them (row spans, stored at
+// once; in auto, diffuse-only Gouraud) under a second fine sphere of another material, and a
+// material shaded in double:
 // were a waiting pixel lit after a later triangle stored its colour, the quad would show the
-// sphere's colour, tens of LSB from `reference`; phong's own bound is 1 LSB.
+// sphere's colour, tens of LSB from `reference`. phong's own bound is 1 LSB; hybrid queues its
+// narrow triangles and stores its wide ones at once, and auto mixes both with its diffuse
+// paths, which store at once: 2 LSB (auto's bound anywhere) for those.
 TEST(PixelQueue, WholeFramesKeepDrawOrderAgainstReference) {
   const Scene scene = parse_scene(R"({
     "image": {"width": 256, "height": 192, "background": [0, 0, 0]},
@@ -130,12 +138,12 @@ TEST(PixelQueue, WholeFramesKeepDrawOrderAgainstReference) {
     "lights": [{"direction": [0.3, 0.5, 1], "color": [1, 1, 1], "space": "view"}],
     "materials": {
       "red": {"diffuse": [0.8, 0.1, 0.1], "specular": 0.4, "shininess": 20},
-      "blue": {"diffuse": [0.1, 0.2, 0.9], "specular": 0.5, "shininess": 60},
+      "matte": {"diffuse": [0.1, 0.2, 0.9], "specular": 0},
       "sharp": {"diffuse": [0.2, 0.7, 0.2], "specular": 0.5, "shininess": 100000}
     },
     "objects": [
       {"primitive": "icosphere", "subdivisions": 6, "radius": 1, "material": "red"},
-      {"primitive": "plane", "size": 1.2, "material": "blue",
+      {"primitive": "plane", "size": 1.2, "material": "matte",
        "transform": {"rotate_deg": [90, 0, 0], "translate": [0.4, 0, 1.2]}},
       {"primitive": "icosphere", "subdivisions": 5, "radius": 0.25, "material": "sharp",
        "transform": {"translate": [0.3, 0.3, 1.5]}},
@@ -146,16 +154,17 @@ TEST(PixelQueue, WholeFramesKeepDrawOrderAgainstReference) {
   RenderOptions ref_options;
   ref_options.method = "reference";
   const ImageF reference = to_float(render(scene, ref_options));
-  for (int threads : {1, 2})
-    for (int tile : {8, 64, 256}) {
-      RenderOptions o;
-      o.method = "phong";
-      o.threads = threads;
-      o.tile_px = tile;
-      const ImageDiff diff = compare_images(to_float(render(scene, o)), reference);
-      EXPECT_LE(diff.max_abs_lsb, 1.0) << "threads " << threads << " tile " << tile << ": worst at ("
-                                       << diff.worst_x << ", " << diff.worst_y << ")";
-    }
+  for (const auto& [method, bound] : {std::pair{"phong", 1.0}, std::pair{"hybrid", 2.0}, std::pair{"auto", 2.0}})
+    for (int threads : {1, 2})
+      for (int tile : {8, 64, 256}) {
+        RenderOptions o;
+        o.method = method;
+        o.threads = threads;
+        o.tile_px = tile;
+        const ImageDiff diff = compare_images(to_float(render(scene, o)), reference);
+        EXPECT_LE(diff.max_abs_lsb, bound) << method << " threads " << threads << " tile " << tile
+                                           << ": worst at (" << diff.worst_x << ", " << diff.worst_y << ")";
+      }
 }
 
 }  // namespace
