@@ -160,10 +160,11 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
     TilePixelCounts tile_counts = count_tile_pixels(buffers.depth.data(), buffers.color.data(), stride, w, h,
                                                     classified && single_path < 0);
     if (single_path >= 0) tile_counts.path[single_path] = tile_counts.covered;
-    ++buffers.counts.tiles_nonempty;
-    buffers.counts.covered_pixels += tile_counts.covered;
-    if (classified)
-      for (int p = 0; p < kShadePathCount; ++p) buffers.counts.path_pixels[p] += tile_counts.path[p];
+    BackEndCounts drawn;
+    drawn.tiles_nonempty = 1;
+    drawn.covered_pixels = tile_counts.covered;
+    std::copy(std::begin(tile_counts.path), std::end(tile_counts.path), drawn.path_pixels);
+    buffers.counts.add(drawn);
   };
   // One task at a time, handed out dynamically: tile costs vary by orders of magnitude.
   tbb::parallel_for(
@@ -174,12 +175,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
       },
       tbb::simple_partitioner());
   BackEndCounts counts;
-  for (const TileBuffers& buffers : scratch_->per_thread) {
-    counts.tiles_nonempty += buffers.counts.tiles_nonempty;
-    counts.covered_pixels += buffers.counts.covered_pixels;
-    counts.single_path_tiles += buffers.counts.single_path_tiles;
-    for (int p = 0; p < kShadePathCount; ++p) counts.path_pixels[p] += buffers.counts.path_pixels[p];
-  }
+  for (const TileBuffers& buffers : scratch_->per_thread) counts.add(buffers.counts);
   return counts;
 }
 

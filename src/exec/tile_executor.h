@@ -15,6 +15,12 @@ struct BackEndCounts {
   long long covered_pixels = 0;
   long long path_pixels[kShadePathCount] = {};  // classified frames: visible pixels per path
   long long single_path_tiles = 0;  // classified frames: tiles that ran one path's kernel alone
+  void add(const BackEndCounts& o) {
+    tiles_nonempty += o.tiles_nonempty;
+    covered_pixels += o.covered_pixels;
+    for (int p = 0; p < kShadePathCount; ++p) path_pixels[p] += o.path_pixels[p];
+    single_path_tiles += o.single_path_tiles;
+  }
 };
 
 class TileExecutor {
