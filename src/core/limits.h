@@ -81,8 +81,10 @@ inline constexpr double kFlatVolumeRelative = 1e-9;
 inline constexpr double kAutoFloatReserveLsb = 0.01;
 
 // Largest error of N.H as the float kernels compute it, for unit N and H at c = N.H near 1, in
-// units of u = 2^-24 (docs/STABILITY.md, "B1"): |N| after the Newton 1/sqrt is 1 within 5.5u,
-// |H| (glm::normalize) within 3.5u, and the three-term dot product rounds within 3u: 12u.
+// units of u = 2^-24 (docs/STABILITY.md, "B1"): |N| after the 1/sqrt (sqrt and a division) is
+// 1 within 4.5u, |H| (glm::normalize) within 3.5u, and the three-term dot product rounds within
+// 3u: 11u, kept at the 12u of the Newton 1/sqrt used until session 15 (5.5u), so that the
+// double fallback's threshold did not move.
 // Through c^n it becomes a relative error of n times that: 0.3 % at n = 1e4, 72 % at 1e6.
 inline constexpr double kFloatNdotHError = 12.0 * 0x1p-24;
 // The share of phong's 1-LSB bound that this rounding may take (the rest covers the normal's

@@ -49,18 +49,14 @@ HWY_INLINE V FastExp2(D d, V y) {
   return hn::BitCast(d, hn::Add(hn::BitCast(di, p), scale));
 }
 
-// 1/sqrt(x) for finite x >= fast_math::kMinInvSqrtInput (FLT_MIN) without the divider: the
-// integer-shift estimate (relative error 3.4e-2) and three Newton steps y (1.5 - 0.5 x y^2), 2e-3, 5e-6, then float rounding.
-// Not the hardware estimate: its precision differs between 128-, 256- and 512-bit vectors
-// (12 vs 14 bits), and a pixel must get the same bits whatever width shaded it.
+// fast_math::inv_sqrt in lanes, bit for bit: sqrt, then a division, both correctly rounded, so
+// a pixel gets the same bits whatever width shaded it. Until session 15 this was an
+// integer-shift estimate and three Newton steps, 14 multiplies and subtractions on the FP pipes
+// that the rest of a shading kernel also needs. Sqrt and division run on the divider instead,
+// beside that work (docs/PERFORMANCE.md, "Session 15").
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V InvSqrt(D d, V x) {
-  const hn::RebindToSigned<D> di;
-  V y = hn::BitCast(d, hn::Sub(hn::Set(di, 0x5F3759DF), hn::ShiftRight<1>(hn::BitCast(di, x))));
-  const V half_x = hn::Mul(hn::Set(d, 0.5f), x);
-  for (int step = 0; step < 3; ++step)
-    y = hn::Mul(y, hn::Sub(hn::Set(d, 1.5f), hn::Mul(half_x, hn::Mul(y, y))));
-  return y;
+  return hn::Div(hn::Set(d, 1.0f), hn::Sqrt(x));
 }
 
 }  // namespace HWY_NAMESPACE

@@ -44,16 +44,15 @@ inline float exp2(float y) {  // y <= 0
   return std::bit_cast<float>(std::bit_cast<int32_t>(p) + (static_cast<int32_t>(whole) << 23));
 }
 
-// inv_sqrt needs x >= kMinInvSqrtInput (FLT_MIN): for a subnormal x the estimate is so far
-// below 1/sqrt(x) that the Newton steps square it past FLT_MAX, giving -inf or NaN. Callers
-// treat a vector whose squared length is below this (shorter than 1.1e-19) as zero.
+// Callers treat a vector whose squared length is below kMinInvSqrtInput (FLT_MIN: shorter than
+// 1.1e-19) as zero. Its squared length is subnormal there, and has lost the precision that
+// normalising would need.
 inline constexpr float kMinInvSqrtInput = 0x1p-126f;
 
-inline float inv_sqrt(float x) {  // finite x >= kMinInvSqrtInput
-  float y = std::bit_cast<float>(0x5F3759DF - (std::bit_cast<int32_t>(x) >> 1));
-  const float half_x = 0.5f * x;
-  for (int step = 0; step < 3; ++step) y = y * (1.5f - half_x * (y * y));
-  return y;
-}
+// 1/sqrt(x) as two correctly rounded operations, sqrt then a division (relative error within
+// 2u): the same bits in scalar code and at every vector width, as the SIMD twin
+// (shade/fast_math-inl.h) needs. Not the hardware estimate, whose precision differs between
+// 128-, 256- and 512-bit vectors (12 vs 14 bits).
+inline float inv_sqrt(float x) { return 1.0f / std::sqrt(x); }  // finite x >= kMinInvSqrtInput
 
 }  // namespace fastshade::fast_math

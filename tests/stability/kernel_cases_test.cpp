@@ -291,8 +291,8 @@ TEST(StabilityFastMath, PowerThroughExp2Log2IsRelativelyAccurate) {
   }
 }
 
-// 1/sqrt over its domain, the normal floats: within 3 units of rounding. (Below, the Newton
-// steps overflow: the kernels treat such vectors as zero, next test.)
+// 1/sqrt over its domain, the normal floats: within 3 units of rounding. (Below it, the
+// kernels treat such vectors as zero, next test.)
 TEST(StabilityFastMath, InverseSquareRootOverTheNormalFloats) {
   ASSERT_EQ(fast_math::kMinInvSqrtInput, std::numeric_limits<float>::min());
   double worst = 0;
