@@ -58,10 +58,12 @@ void LightQueue(PixelQueue& q, const TileTarget& tt, bool all) {
 }
 
 // The lanes of `pass`: depth stored now, normal and tile index appended to the queue; the
-// queue is lit once it holds a whole vector. AVX-512 compresses lanes natively (CompressStore
-// may write a whole vector past the count: the capacity allows it); on narrower targets
-// Highway emulates it with tables, which cost more than copying the passed lanes one by one
-// (callgrind, AVX2, bunny phong: 331 M instructions against 258 M; session 11).
+// queue is lit once it holds a whole vector. AVX-512 compresses lanes natively, in a register
+// and then stored as a whole vector past the count (the capacity allows it): the form that
+// compresses straight to memory (CompressStore) is microcoded on Zen 4, 21.5 ns against
+// 1.4 ns a vector (docs/PERFORMANCE.md, session 16). On narrower targets Highway emulates the
+// compress with tables, which cost more than copying the passed lanes one by one (callgrind,
+// AVX2, bunny phong: 331 M instructions against 258 M; session 11).
 template <bool kSrgb, BrdfKind kBrdf, class D, class V = hn::Vec<D>>
 HWY_INLINE void EnqueuePassed(D d, hn::Mask<D> pass, V z, V nx, V ny, V nz, const int32_t* lane_at,
                               const PhongSpanInput& in, const TileTarget& tt) {
@@ -82,10 +84,11 @@ HWY_INLINE void EnqueuePassed(D d, hn::Mask<D> pass, V z, V nx, V ny, V nz, cons
     tt.depth[lane_at[lane]] = lane_z[lane];
   }
   const hn::RebindToSigned<D> di;
-  hn::CompressStore(nx, pass, d, q.nx + q.count);
-  hn::CompressStore(ny, pass, d, q.ny + q.count);
-  hn::CompressStore(nz, pass, d, q.nz + q.count);
-  q.count += static_cast<int>(hn::CompressStore(hn::LoadU(di, lane_at), hn::RebindMask(di, pass), di, q.at + q.count));
+  hn::StoreU(hn::Compress(nx, pass), d, q.nx + q.count);
+  hn::StoreU(hn::Compress(ny, pass), d, q.ny + q.count);
+  hn::StoreU(hn::Compress(nz, pass), d, q.nz + q.count);
+  hn::StoreU(hn::Compress(hn::LoadU(di, lane_at), hn::RebindMask(di, pass)), di, q.at + q.count);
+  q.count += static_cast<int>(hn::CountTrue(d, pass));
 #else
   alignas(64) float lane_nx[kMaxLanes], lane_ny[kMaxLanes], lane_nz[kMaxLanes];
   hn::Store(nx, d, lane_nx);
