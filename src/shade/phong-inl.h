@@ -11,6 +11,7 @@
 
 #include <hwy/highway.h>
 
+#include "shade/diffuse_quotient-inl.h"
 #include "shade/method.h"
 #include "shade/methods.h"
 #include "shade/phong_color-inl.h"
@@ -48,6 +49,17 @@ HWY_INLINE auto PhongShade(D d, const PhongSpanInput& in, const LaneOffsets<D>& 
   return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
 }
 
+// The diffuse quotient of a binned triangle (shade/diffuse_quotient.h), from its planes in `in`;
+// false where the triangle keeps the normalised planes.
+HWY_INLINE bool set_up_quotient(const Frame& frame, uint32_t entry, const SetupTriangle& t,
+                                const Barycentrics& bary, const PhongSpanInput& in, DiffuseQuotient& dq) {
+  const float flip = (frame.shade.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
+  glm::vec3 n_over_w[3];
+  for (int i = 0; i < 3; ++i) n_over_w[i] = (flip * t.inv_w[i]) * frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
+  const PixelRect box{t.px_min[0], t.px_min[1], t.px_max[0], t.px_max[1]};
+  return set_up_diffuse_quotient(in, bary, box, n_over_w, dq);
+}
+
 // A material float cannot shade within 1 LSB (docs/STABILITY.md, "Fallbacks") is drawn by the
 // reference; the flag is only ever set for exact cos^n, and only its highlight needs it.
 HWY_INLINE bool ShadesInDouble(const Frame& frame, uint32_t entry) {
@@ -78,8 +90,11 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   in.material = &k.materials[t.material];
   in.shade = &k;
   bool ready = false;
+  DiffuseQuotient dq;  // diffuse only: written at set-up, read only where `quotient` holds
+  bool quotient = false;
   auto set_up = [&] {
     set_up_phong_planes<kLocal>(frame, entry, t, tri.bary, in);
+    if constexpr (!kSpecular) quotient = set_up_quotient(frame, entry, t, tri.bary, in, dq);
     ready = true;
   };
   // Inlined into the span loop, where the planes' constants stay in registers: called per
@@ -88,6 +103,14 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     if (!ready) set_up();
     if constexpr (kQueued) {
       if (tt.pending->count > 0) LightQueue<kSrgb, kBrdf>(*tt.pending, tt, true);
+    }
+    if constexpr (!kSpecular) {
+      // Decided once per triangle, at set-up; set-up waits for the first vector that passes
+      // the depth test, so the choice is a branch here that goes the same way every vector.
+      if (quotient) {
+        const ColorVecs<decltype(d)> c = DiffuseQuotientColor(d, in, dq, o);
+        return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+      }
     }
     return PhongShade<kLocal, kSrgb, kBrdf, kSpecular>(d, in, o);
   };

@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include "shade/brdf_variants.h"
+#include "shade/diffuse_quotient.h"
 #include "shade/methods.h"
 #include "shade/phong-inl.h"
 #include "shade/pixel_queue.h"
@@ -43,6 +44,21 @@ void PhongSpan(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) 
   PickPhongSpan(in.shade->local_viewer, in.shade->srgb, in.material->lobe.kind)(in, py, x0, x1, row);
 }
 
+template <bool kSrgb>
+void DiffuseQuotientSpanVariant(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
+                                RowTarget row) {
+  ShadeSpan(in.bary, in.depth, py, x0, x1, row, [&](auto d, const auto& o) {
+    const ColorVecs<decltype(d)> c = DiffuseQuotientColor(d, in, dq, o);
+    return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+  });
+}
+
+void DiffuseQuotientSpan(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
+                         RowTarget row) {
+  if (in.shade->srgb) DiffuseQuotientSpanVariant<true>(in, dq, py, x0, x1, row);
+  else DiffuseQuotientSpanVariant<false>(in, dq, py, x0, x1, row);
+}
+
 void LightPixelQueue(PixelQueue& queue, const TileTarget& target, bool all) {
   with_brdf_kind(queue.material->lobe.kind, [&](auto kind) {
     if (queue.shade->srgb) LightQueue<true, decltype(kind)::value>(queue, target, all);
@@ -61,6 +77,7 @@ HWY_EXPORT(SelectPhong);
 HWY_EXPORT(PhongSpan);
 HWY_EXPORT(SelectPhongDiffuse);
 HWY_EXPORT(LightPixelQueue);
+HWY_EXPORT(DiffuseQuotientSpan);
 
 AttrNeeds phong_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};
@@ -77,6 +94,11 @@ DrawTriangleFn select_phong_diffuse(const ShadeConstants& shade) {
 
 void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
   HWY_DYNAMIC_DISPATCH(PhongSpan)(in, py, x0, x1, row);
+}
+
+void diffuse_quotient_span(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
+                           RowTarget row) {
+  HWY_DYNAMIC_DISPATCH(DiffuseQuotientSpan)(in, dq, py, x0, x1, row);
 }
 
 void light_pixel_queue(PixelQueue& queue, const TileTarget& target, bool all) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "shade/brdf.h"
+#include "shade/diffuse_quotient.h"
 #include "shade/fast_math.h"
 #include "shade/method.h"
 #include "shade/hybrid.h"
@@ -114,15 +115,31 @@ PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, fl
   return rgb;
 }
 
-void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
+namespace {
+
+// Depth test, colour(offsets) and quantisation of every pixel of a row span.
+template <typename ColorFn>
+void lit_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row, ColorFn&& color) {
   const bool srgb = in.shade->srgb;
   for (int px = x0; px <= x1; ++px) {
     const PixelOffsets o = pixel_offsets(in.bary, px, py);
     if (!depth_pass(in.depth, o, row.depth[px])) continue;
-    const PhongColor rgb = phong_color_scalar(in, o);
+    const PhongColor rgb = color(o);
     row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
                               quantize_like_simd(rgb.c[2], srgb));
   }
+}
+
+}  // namespace
+
+void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
+  lit_span_scalar(in, py, x0, x1, row, [&](const PixelOffsets& o) { return phong_color_scalar(in, o); });
+}
+
+void diffuse_quotient_span_scalar(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0,
+                                  int x1, RowTarget row) {
+  lit_span_scalar(in, py, x0, x1, row,
+                  [&](const PixelOffsets& o) { return diffuse_quotient_color_scalar(in, dq, o); });
 }
 
 void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,

@@ -2,7 +2,9 @@
 // every compiled ISA, for span lengths 0..2W+1 (W up to 16) at unaligned starts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -10,6 +12,7 @@
 #include "exec/isa.h"
 #include "frame/edge_function.h"
 #include "shade/brdf.h"
+#include "shade/diffuse_quotient.h"
 #include "shade/hybrid.h"
 #include "shade/normal_blocks.h"
 #include "shade/span_kernels.h"
@@ -199,6 +202,133 @@ TEST_F(SpanKernels, NormalsPathsMatchScalarReferenceOnEveryIsa) {
                     [&](RowTarget r, int x0, int x1) { normals_span_scalar(in, mode, tol, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
       }
   }
+}
+
+// A triangle whose vertex normals lie within `spread` (radians, roughly) of a random axis:
+// its normal planes, its normals over w as set-up reads them, and its box.
+struct QuotientCase {
+  Fixture f;
+  PhongSpanInput in;
+  glm::vec3 n_over_w[3];
+  PixelRect box;
+};
+QuotientCase quotient_case(std::mt19937& rng, float spread, const MaterialConstants& m, const ShadeConstants& k) {
+  std::normal_distribution<float> g(0.0f, 1.0f);
+  QuotientCase qc;
+  qc.f = random_triangle(rng);
+  const SetupTriangle& t = qc.f.tri;
+  const glm::vec3 axis = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
+  glm::vec3 n[3];
+  for (int i = 0; i < 3; ++i) {
+    n[i] = glm::normalize(axis + spread * glm::vec3(g(rng), g(rng), g(rng)));
+    qc.n_over_w[i] = t.inv_w[i] * n[i];
+  }
+  qc.in.bary = qc.f.bary;
+  qc.in.depth = make_plane(qc.f.bary, t.depth[0], t.depth[1], t.depth[2]);
+  for (int c = 0; c < 3; ++c)
+    qc.in.n[c] = make_plane(qc.f.bary, double(n[0][c]) * t.inv_w[0], double(n[1][c]) * t.inv_w[1],
+                            double(n[2][c]) * t.inv_w[2]);
+  qc.in.material = &m;
+  qc.in.shade = &k;
+  qc.box = {std::min({t.x_fx[0], t.x_fx[1], t.x_fx[2]}) / 256, std::min({t.y_fx[0], t.y_fx[1], t.y_fx[2]}) / 256,
+            std::max({t.x_fx[0], t.x_fx[1], t.x_fx[2]}) / 256, std::max({t.y_fx[0], t.y_fx[1], t.y_fx[2]}) / 256};
+  return qc;
+}
+
+struct TwoLights {
+  ShadeConstants k;
+  MaterialConstants m{glm::vec3(0.6f, 0.5f, 0.4f), glm::vec3(0.0f), 40.0f, 40.0, make_brdf(BrdfChoice{}, 40.0)};
+  TwoLights() {
+    k.ambient = glm::vec3(0.05f);
+    k.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::vec3(0, 0, 1), glm::vec3(0.9f)});
+    k.lights.push_back({glm::normalize(glm::vec3(-1, 0.2f, 0.5f)), glm::vec3(0, 0, 1), glm::vec3(0.4f, 0.5f, 0.6f)});
+  }
+};
+
+TEST_F(SpanKernels, DiffuseQuotientMatchesScalarReferenceOnEveryIsa) {
+  std::mt19937 rng(15);
+  TwoLights scene;
+  for (const std::string& isa : available_isas()) {
+    select_isa(isa);
+    for (bool srgb : {false, true}) {
+      scene.k.srgb = srgb;
+      QuotientCase qc = quotient_case(rng, 0.3f, scene.m, scene.k);
+      DiffuseQuotient dq;
+      while (!set_up_diffuse_quotient(qc.in, qc.f.bary, qc.box, qc.n_over_w, dq))
+        qc = quotient_case(rng, 0.3f, scene.m, scene.k);
+      // Linear output: the same IEEE operations, bit-exact; sRGB as gouraud's, 1 LSB.
+      expect_same("diffuse quotient " + isa + (srgb ? " srgb" : ""), rng, srgb ? 1 : 0,
+                  [&](RowTarget r, int x0, int x1) { diffuse_quotient_span(qc.in, dq, 100, x0, x1, r); },
+                  [&](RowTarget r, int x0, int x1) { diffuse_quotient_span_scalar(qc.in, dq, 100, x0, x1, r); });
+    }
+  }
+}
+
+// The quotient's colour against the normalised normal of the same planes in double, at every
+// covered pixel of triangles set-up accepts, within the bound kDiffuseQuotientMaxTermRatio
+// promises: (3.5 R + 5 sqrt(R) + 3)u of each light's kd, and the sums' own rounding.
+TEST(DiffuseQuotient, WithinItsRoundingBoundOfTheNormalisedPlanes) {
+  std::mt19937 rng(16);
+  const TwoLights scene;
+  const double r = kDiffuseQuotientMaxTermRatio, u = 0x1p-24;
+  const double bound = ((3.5 * r + 5.0 * std::sqrt(r) + 3.0) + 8.0) * u;
+  int accepted = 0, pixels = 0;
+  double worst = 0.0;
+  for (float spread : {0.001f, 0.05f, 0.3f, 0.8f, 2.0f})
+    for (int trial = 0; trial < 200; ++trial) {
+      const QuotientCase qc = quotient_case(rng, spread, scene.m, scene.k);
+      DiffuseQuotient dq;
+      if (!set_up_diffuse_quotient(qc.in, qc.f.bary, qc.box, qc.n_over_w, dq)) continue;
+      ++accepted;
+      const Barycentrics& b = qc.f.bary;
+      for (int py = qc.box.y0; py <= qc.box.y1; py += 3)
+        for (int px = qc.box.x0; px <= qc.box.x1; px += 3) {
+          const double x = px - b.ax, y = py - b.ay;
+          bool inside = true;
+          for (int i = 0; i < 3; ++i) inside = inside && b.at_anchor[i] + b.d_dx[i] * x + b.d_dy[i] * y >= 0.0;
+          if (!inside) continue;
+          glm::dvec3 m_w;
+          for (int c = 0; c < 3; ++c) m_w[c] = double(qc.in.n[c].v0) + double(qc.in.n[c].gx) * x + double(qc.in.n[c].gy) * y;
+          const PhongColor got = diffuse_quotient_color_scalar(qc.in, dq, pixel_offsets(b, px, py));
+          for (int c = 0; c < 3; ++c) {
+            double want = scene.k.ambient[c], scale = want;
+            for (const LightView& light : scene.k.lights) {
+              const double lit = double(light.color[c]) * scene.m.kd[c];
+              want += lit * std::max(glm::dot(glm::dvec3(light.l_view), m_w) / glm::length(m_w), 0.0);
+              scale += lit;
+            }
+            const double err = std::abs(got.c[c] - want) / scale;
+            worst = std::max(worst, err);
+            ASSERT_LE(err, bound) << "spread " << spread << " trial " << trial << " pixel " << px << "," << py;
+          }
+          ++pixels;
+        }
+    }
+  // Set-up must take most triangles whose normals spread up to a fifth of a radian or so.
+  EXPECT_GT(accepted, 400);
+  EXPECT_GT(pixels, 10000);
+  std::printf("diffuse quotient: %d of 1000 triangles taken, %d pixels, worst %.1f u (bound %.0f u)\n", accepted,
+              pixels, worst / u, bound / u);
+}
+
+TEST(DiffuseQuotient, RefusesWhatItCannotBound) {
+  std::mt19937 rng(17);
+  TwoLights scene;
+  QuotientCase qc = quotient_case(rng, 0.01f, scene.m, scene.k);
+  DiffuseQuotient dq;
+  ASSERT_TRUE(set_up_diffuse_quotient(qc.in, qc.f.bary, qc.box, qc.n_over_w, dq));
+  // Antiparallel vertex normals: |m| reaches 0 inside.
+  QuotientCase opposed = qc;
+  opposed.n_over_w[1] = -qc.n_over_w[0];
+  EXPECT_FALSE(set_up_diffuse_quotient(opposed.in, opposed.f.bary, opposed.box, opposed.n_over_w, dq));
+  // A vertex normal over w 100 times shorter than the planes' (a vertex 100 times farther): the
+  // terms outgrow the least |m|^2 set-up can promise.
+  QuotientCase far = qc;
+  far.n_over_w[2] *= 0.01f;
+  EXPECT_FALSE(set_up_diffuse_quotient(far.in, far.f.bary, far.box, far.n_over_w, dq));
+  // More lights than a quotient holds planes for.
+  while (scene.k.lights.size() <= static_cast<std::size_t>(kDiffuseQuotientMaxLights)) scene.k.lights.push_back(scene.k.lights[0]);
+  EXPECT_FALSE(set_up_diffuse_quotient(qc.in, qc.f.bary, qc.box, qc.n_over_w, dq));
 }
 
 // The block weights give the normals they promise: equal-angle = slerp of the ends, adaptive

@@ -1,0 +1,52 @@
+// The diffuse quotient (shade/diffuse_quotient.h) in lanes, per target (Highway "-inl.h"):
+// diffuse_quotient_color_scalar() is its twin, the same float operations in the same order.
+#if defined(FASTSHADE_SHADE_DIFFUSE_QUOTIENT_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FASTSHADE_SHADE_DIFFUSE_QUOTIENT_INL_H_
+#undef FASTSHADE_SHADE_DIFFUSE_QUOTIENT_INL_H_
+#else
+#define FASTSHADE_SHADE_DIFFUSE_QUOTIENT_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "shade/diffuse_quotient.h"
+#include "shade/fast_math-inl.h"
+#include "shade/phong_color-inl.h"
+#include "shade/span_loop-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace fastshade {
+namespace HWY_NAMESPACE {
+
+template <class D>
+HWY_INLINE ColorVecs<D> DiffuseQuotientColor(D d, const PhongSpanInput& in, const DiffuseQuotient& dq,
+                                             const LaneOffsets<D>& o) {
+  using V = hn::Vec<D>;
+  const MaterialConstants& m = *in.material;
+  const ShadeConstants& k = *in.shade;
+  const V x = hn::Sub(hn::Add(o.block_dx, o.k), hn::Set(d, dq.cx)), y = hn::Sub(o.dy, hn::Set(d, dq.cy));
+  const V inner = hn::Add(hn::Add(hn::Set(d, dq.q[1]), hn::Mul(hn::Set(d, dq.q[2]), x)), hn::Mul(hn::Set(d, dq.q[3]), y));
+  const V m2 = hn::Add(hn::Add(hn::Set(d, dq.q[0]), hn::Mul(x, inner)),
+                       hn::Mul(y, hn::Add(hn::Set(d, dq.q[4]), hn::Mul(hn::Set(d, dq.q[5]), y))));
+  const V inv = hn::IfThenElseZero(hn::Ge(m2, hn::Set(d, fast_math::kMinInvSqrtInput)), InvSqrt(d, m2));
+  V r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
+  for (int i = 0; i < dq.lights; ++i) {
+    const V l_dot_m = hn::Add(hn::Add(hn::Set(d, dq.l[i][0]), hn::Mul(hn::Set(d, dq.l[i][1]), x)),
+                              hn::Mul(hn::Set(d, dq.l[i][2]), y));
+    const V diffuse = hn::Max(hn::Mul(l_dot_m, inv), hn::Zero(d));
+    const LightView& light = k.lights[i];
+    auto channel = [&](V acc, int c) {
+      return hn::Add(acc, hn::Mul(hn::Set(d, light.color[c]), hn::Mul(hn::Set(d, m.kd[c]), diffuse)));
+    };
+    r = channel(r, 0);
+    g = channel(g, 1);
+    b = channel(b, 2);
+  }
+  return {r, g, b};
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace fastshade
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard toggle
