@@ -29,20 +29,22 @@ HWY_INLINE ColorVecs<D> DiffuseQuotientColor(D d, const PhongSpanInput& in, cons
   const V m2 = hn::Add(hn::Add(hn::Set(d, dq.q[0]), hn::Mul(x, inner)),
                        hn::Mul(y, hn::Add(hn::Set(d, dq.q[4]), hn::Mul(hn::Set(d, dq.q[5]), y))));
   const V inv = hn::IfThenElseZero(hn::Ge(m2, hn::Set(d, fast_math::kMinInvSqrtInput)), InvSqrt(d, m2));
-  V r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
+  ColorVecs<D> acc{hn::Set(d, k.ambient.r), hn::Set(d, k.ambient.g), hn::Set(d, k.ambient.b)};
   for (int i = 0; i < dq.lights; ++i) {
     const V l_dot_m = hn::Add(hn::Add(hn::Set(d, dq.l[i][0]), hn::Mul(hn::Set(d, dq.l[i][1]), x)),
                               hn::Mul(hn::Set(d, dq.l[i][2]), y));
     const V diffuse = hn::Max(hn::Mul(l_dot_m, inv), hn::Zero(d));
-    const LightView& light = k.lights[i];
-    auto channel = [&](V acc, int c) {
-      return hn::Add(acc, hn::Mul(hn::Set(d, light.color[c]), hn::Mul(hn::Set(d, m.kd[c]), diffuse)));
-    };
-    r = channel(r, 0);
-    g = channel(g, 1);
-    b = channel(b, 2);
+    AddLight<false>(d, m, k.lights[i], diffuse, hn::Zero(d), acc);
   }
-  return {r, g, b};
+  return acc;
+}
+
+// The quotient's pixels, quantised and packed (PhongShade's counterpart).
+template <bool kSrgb, class D>
+HWY_INLINE auto DiffuseQuotientShade(D d, const PhongSpanInput& in, const DiffuseQuotient& dq,
+                                     const LaneOffsets<D>& o) {
+  const ColorVecs<D> c = DiffuseQuotientColor(d, in, dq, o);
+  return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -27,7 +28,7 @@ bool set_up_diffuse_quotient(const PhongSpanInput& in, const Barycentrics& bary,
     gx[c] = p.gx;
     gy[c] = p.gy;
   }
-  double q_min = glm::dot(glm::dvec3(n_over_w[0]), glm::dvec3(n_over_w[0]));
+  double q_min = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i)
     for (int j = i; j < 3; ++j) q_min = std::min(q_min, glm::dot(glm::dvec3(n_over_w[i]), glm::dvec3(n_over_w[j])));
   const double t = glm::length(s) + glm::length(gx) * hx + glm::length(gy) * hy;

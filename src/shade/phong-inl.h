@@ -107,10 +107,7 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     if constexpr (!kSpecular) {
       // Decided once per triangle, at set-up; set-up waits for the first vector that passes
       // the depth test, so the choice is a branch here that goes the same way every vector.
-      if (quotient) {
-        const ColorVecs<decltype(d)> c = DiffuseQuotientColor(d, in, dq, o);
-        return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
-      }
+      if (quotient) return DiffuseQuotientShade<kSrgb>(d, in, dq, o);
     }
     return PhongShade<kLocal, kSrgb, kBrdf, kSpecular>(d, in, o);
   };

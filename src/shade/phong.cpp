@@ -47,10 +47,8 @@ void PhongSpan(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) 
 template <bool kSrgb>
 void DiffuseQuotientSpanVariant(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
                                 RowTarget row) {
-  ShadeSpan(in.bary, in.depth, py, x0, x1, row, [&](auto d, const auto& o) {
-    const ColorVecs<decltype(d)> c = DiffuseQuotientColor(d, in, dq, o);
-    return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
-  });
+  ShadeSpan(in.bary, in.depth, py, x0, x1, row,
+            [&](auto d, const auto& o) { return DiffuseQuotientShade<kSrgb>(d, in, dq, o); });
 }
 
 void DiffuseQuotientSpan(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,

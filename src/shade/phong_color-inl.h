@@ -33,6 +33,21 @@ struct ColorVecs {
   hn::Vec<D> r, g, b;
 };
 
+// One light's share of the colour, channel by channel: acc + colour × (kd diffuse + ks specular).
+// Diffuse only (kSpecular = false) adds no ks × 0 term, so no cost (the sum is the same: x + 0 = x).
+template <bool kSpecular, class D, class V = hn::Vec<D>>
+HWY_INLINE void AddLight(D d, const MaterialConstants& m, const LightView& light, V diffuse, V specular,
+                         ColorVecs<D>& acc) {
+  auto channel = [&](V sum, int c) {
+    const V kd_diffuse = hn::Mul(hn::Set(d, m.kd[c]), diffuse);
+    const V lit = kSpecular ? hn::Add(kd_diffuse, hn::Mul(hn::Set(d, m.ks[c]), specular)) : kd_diffuse;
+    return hn::Add(sum, hn::Mul(hn::Set(d, light.color[c]), lit));
+  };
+  acc.r = channel(acc.r, 0);
+  acc.g = channel(acc.g, 1);
+  acc.b = channel(acc.b, 2);
+}
+
 // Blinn-Phong at the lanes' pixels before quantisation; phong_color_scalar() is its twin.
 // kSpecular = false: the diffuse-only colour (`auto`'s per-pixel diffuse path).
 template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, class D, class V = hn::Vec<D>>
@@ -61,7 +76,7 @@ HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx
     vz = hn::Neg(hn::Mul(EvalPlane(d, in.p[2], o), w));
     Normalize(d, vx, vy, vz);
   }
-  V r = hn::Set(d, k.ambient.r), g = hn::Set(d, k.ambient.g), b = hn::Set(d, k.ambient.b);
+  ColorVecs<D> acc{hn::Set(d, k.ambient.r), hn::Set(d, k.ambient.g), hn::Set(d, k.ambient.b)};
   for (const LightView& light : k.lights) {
     const V lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
             lz = hn::Set(d, light.l_view.z);
@@ -81,17 +96,9 @@ HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx
       }
       specular = Brdf<kBrdf>(d, Dot3<D>(nx, ny, nz, hx, hy, hz), m.lobe);
     }
-    auto channel = [&](V acc, int c) {
-      const V kd_diffuse = hn::Mul(hn::Set(d, m.kd[c]), diffuse);
-      // Diffuse only: no ks * 0 term, so no cost (the sum is the same: x + 0 = x).
-      const V lit = kSpecular ? hn::Add(kd_diffuse, hn::Mul(hn::Set(d, m.ks[c]), specular)) : kd_diffuse;
-      return hn::Add(acc, hn::Mul(hn::Set(d, light.color[c]), lit));
-    };
-    r = channel(r, 0);
-    g = channel(g, 1);
-    b = channel(b, 2);
+    AddLight<kSpecular>(d, m, light, diffuse, specular, acc);
   }
-  return {r, g, b};
+  return acc;
 }
 
 }  // namespace HWY_NAMESPACE
