@@ -163,6 +163,7 @@ void plan_self_occlusion(const SceneGeometry& g, const std::vector<MeshClosure>&
     oc.end_triangle = o.first_triangle + o.triangle_count;
     oc.exiting_is_back = c.outward;
     oc.rims_begin = oc.rims_end = static_cast<uint32_t>(plan.rim_boxes.size());
+    oc.rims_union = PixelBox{0, 0, -1, -1};
     uint8_t any = 0;
     for (uint32_t v = o.first_vertex; v < o.first_vertex + o.vertex_count; ++v) any |= pv.flags[v];
     oc.cull_exiting = c.solid && !(any & (kNeedsClip | kNonFinite));
@@ -175,8 +176,13 @@ void plan_self_occlusion(const SceneGeometry& g, const std::vector<MeshClosure>&
         y0 = std::min(y0, s.y_fx), y1 = std::max(y1, s.y_fx);
       }
       // Pixels whose centres the rim's hull may reach, and one more on each side for snapping.
-      plan.rim_boxes.push_back({(x0 >> limits::kSubpixelBits) - 1, (y0 >> limits::kSubpixelBits) - 1,
-                                (x1 >> limits::kSubpixelBits) + 1, (y1 >> limits::kSubpixelBits) + 1});
+      const PixelBox rim{(x0 >> limits::kSubpixelBits) - 1, (y0 >> limits::kSubpixelBits) - 1,
+                         (x1 >> limits::kSubpixelBits) + 1, (y1 >> limits::kSubpixelBits) + 1};
+      plan.rim_boxes.push_back(rim);
+      PixelBox& u = oc.rims_union;
+      u = r == 0 ? rim
+                 : PixelBox{std::min(u.x0, rim.x0), std::min(u.y0, rim.y0), std::max(u.x1, rim.x1),
+                            std::max(u.y1, rim.y1)};
     }
     oc.rims_end = static_cast<uint32_t>(plan.rim_boxes.size());
   }

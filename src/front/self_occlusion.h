@@ -51,6 +51,9 @@ struct ObjectOcclusion {
   bool cull_exiting = false;     // the object's exiting faces may be culled this frame
   bool exiting_is_back = true;   // exiting faces are the screen's back faces (outward winding)
   uint32_t rims_begin = 0, rims_end = 0;  // its rims' boxes in SelfOcclusionPlan::rim_boxes
+  // The union of those boxes (empty: x0 > x1): a box that misses it misses every rim, the
+  // answer for most exiting faces, in four compares instead of four a rim.
+  PixelBox rims_union{0, 0, -1, -1};
 };
 
 struct SelfOcclusionPlan {
@@ -73,14 +76,16 @@ class OcclusionCursor {
     while (objects[object_].end_triangle <= triangle) ++object_;
     const ObjectOcclusion& o = objects[object_];
     if (!o.cull_exiting || back_facing != o.exiting_is_back) return false;
-    for (uint32_t r = o.rims_begin; r < o.rims_end; ++r) {
-      const PixelBox& rim = plan_->rim_boxes[r];
-      if (box.x0 <= rim.x1 && rim.x0 <= box.x1 && box.y0 <= rim.y1 && rim.y0 <= box.y1) return false;
-    }
+    if (!overlaps(box, o.rims_union)) return true;
+    for (uint32_t r = o.rims_begin; r < o.rims_end; ++r)
+      if (overlaps(box, plan_->rim_boxes[r])) return false;
     return true;
   }
 
  private:
+  static bool overlaps(const PixelBox& a, const PixelBox& b) {
+    return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+  }
   const SelfOcclusionPlan* plan_;
   std::size_t object_ = 0;
 };

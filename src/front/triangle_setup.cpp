@@ -70,7 +70,7 @@ class ChunkBuilder {
     decide_triangles(columns, count, p_.viewport.width, p_.viewport.height, p_.cull == Cull::Back, fates);
     chunk_.dropped += fates.dropped;
     chunk_.culled += fates.culled;
-    int kept = 0;
+    int kept = 0, hidden = 0;  // counted here: the chunk's counters in the loop made a chain of stores and loads
     uint32_t kept_source[kFateBlock];
     uint16_t kept_column[kFateBlock];
     for (int word = 0; word * 64 < count; ++word)
@@ -78,13 +78,14 @@ class ChunkBuilder {
         const int i = word * 64 + std::countr_zero(bits);
         const bool back_facing = (fates.back[word] >> (i % 64)) & 1;
         if (occlusion_.hidden(source[i], back_facing, {fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]})) {
-          ++chunk_.culled;
-          ++chunk_.hidden;
+          ++hidden;
           continue;
         }
         kept_source[kept] = source[i];
         kept_column[kept++] = static_cast<uint16_t>(i);
       }
+    chunk_.culled += hidden;
+    chunk_.hidden += hidden;
     ShadePath planned[kFateBlock];
     uint64_t planned_lights[kFateBlock];
     plan_paths(g, kept_source, kept, planned, planned_lights);
