@@ -25,6 +25,10 @@ struct RenderOptions {
   double spec_threshold = 1.0 / 510.0;
   std::string spec_method = "hybrid";  // auto: the kernel of triangles that may show a highlight
   std::string classifier = "bound";    // auto: bound (error-checked) | paper (the literal rule)
+  // auto (bound): a block of triangles whose screen boxes average fewer pixels than this takes
+  // the specular path unclassified, where classifying would cost more than it saves; 0:
+  // classify every triangle (limits::kClassifyMinBoxPx says why the default)
+  double classify_min_px = 40.0;
   // skip: back faces that their own closed (or capped) mesh provably hides are culled at setup
   // (front/self_occlusion.h); draw: every face is drawn, as a z-buffer without it would
   std::string hidden_faces = "skip";
@@ -66,6 +70,7 @@ struct RenderStats {
   int threads = 0, tile = 0;
   std::string isa, method;
   std::vector<PathStats> paths;        // classifying methods only
+  long long triangles_unclassified = 0;  // of paths' specular: sent there unclassified (--classify-min-px)
   std::vector<std::string> left_out;   // what the frame skipped because the scene needs none of it
   StageTimes median;  // median over timed frames
   int frames = 0;

@@ -87,6 +87,7 @@ struct TuneCommand {
   std::vector<double> thresholds;   // auto's --spec-threshold values; empty: from max_error
   std::vector<std::string> spec_methods = {"hybrid", "phong"};
   std::vector<std::string> classifiers = {"bound"};
+  std::vector<double> classify_min_pxs = {RenderOptions{}.classify_min_px};
   int threads = 0, frames = 20;
   std::string isa = "best";
 };

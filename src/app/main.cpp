@@ -42,6 +42,10 @@ int main(int argc, char** argv) {
                 "auto: kernel for triangles that may show a highlight: hybrid (default) or phong");
   r->add_option("--classifier", render.options.classifier,
                 "auto: bound (error-checked, default) or paper (highlight -> specular, rest -> Gouraud)");
+  r->add_option("--classify-min-px", render.options.classify_min_px,
+                "auto: blocks of triangles whose screen boxes average fewer pixels than this take the "
+                "specular path unclassified, as classifying costs more than it saves there (default 40; "
+                "0: classify every triangle)");
   r->add_option("--hidden-faces", render.options.hidden_faces,
                 "skip (default): cull back faces their own closed mesh provably hides; draw: draw every face");
   r->add_flag("--explain", render.explain, "print the shading plan: paths, and what was left out");
@@ -107,6 +111,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   t->add_option("--classifiers", tune.classifiers, "auto: --classifier values swept")->delimiter(',')
       ->capture_default_str();
+  t->add_option("--classify-min-pxs", tune.classify_min_pxs, "auto: --classify-min-px values swept")
+      ->delimiter(',')->capture_default_str();
   t->add_option("--threads", tune.threads, "worker threads (0 = all)")->capture_default_str();
   t->add_option("--frames", tune.frames, "timed frames per candidate and scene after one warm-up")
       ->capture_default_str();

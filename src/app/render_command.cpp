@@ -38,6 +38,7 @@ nlohmann::json stats_json(const RenderStats& s) {
           {"mpix_per_s", s.mpix_per_s()},
           {"mtri_per_s", s.mtri_per_s()},
           {"paths", paths},
+          {"triangles_unclassified", s.triangles_unclassified},
           {"left_out", s.left_out}};
 }
 

@@ -19,7 +19,7 @@ constexpr double kMaxSpecThreshold = 1.0;
 constexpr std::pair<std::string_view, std::string_view> kListFlags[] = {
     {"--method", "--methods"},       {"--tile", "--tiles"},
     {"--spec-threshold", "--thresholds"}, {"--spec-method", "--spec-methods"},
-    {"--classifier", "--classifiers"}};
+    {"--classifier", "--classifiers"},   {"--classify-min-px", "--classify-min-pxs"}};
 
 void validate_candidate(const Candidate& c) {
   try {
@@ -40,6 +40,8 @@ std::string label_of(const RenderOptions& o, bool tiles_vary) {
   if (o.method != "auto") return label;
   label += " --spec-threshold " + format_double("%.4g", o.spec_threshold) + " --spec-method " + o.spec_method;
   if (o.classifier != RenderOptions{}.classifier) label += " --classifier " + o.classifier;
+  if (o.classify_min_px != RenderOptions{}.classify_min_px)
+    label += " --classify-min-px " + format_double("%.4g", o.classify_min_px);
   return label;
 }
 
@@ -65,12 +67,16 @@ std::size_t plan_candidates(const TuneCommand& cmd, const RenderOptions& base, s
       }
       for (double threshold : thresholds)
         for (const std::string& spec_method : cmd.spec_methods)
-          for (const std::string& classifier : cmd.classifiers) {
-            o.spec_threshold = threshold;
-            o.spec_method = spec_method;
-            o.classifier = classifier;
-            add(o);
-          }
+          for (const std::string& classifier : cmd.classifiers)
+            for (double classify_min_px : cmd.classify_min_pxs) {
+              // The paper's rule classifies every triangle whatever the bound: one candidate.
+              if (classifier == "paper" && classify_min_px != cmd.classify_min_pxs.front()) continue;
+              o.spec_threshold = threshold;
+              o.spec_method = spec_method;
+              o.classifier = classifier;
+              o.classify_min_px = classify_min_px;
+              add(o);
+            }
     }
   }
   add(base);

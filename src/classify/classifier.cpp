@@ -77,6 +77,9 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
       lt.cos_negligible = cos_below(kNegligible * p.spec_threshold);
       lt.cos_share = cos_below(p.spec_threshold / double(k.lights.size()));
       lt.cos_alone = cos_below(p.spec_threshold);
+      t.has_specular = t.has_specular || lt.spec_weight > 0.0;
+      if (lt.spec_weight >= p.spec_threshold)
+        t.highlight_lights |= uint64_t(1) << std::min<std::size_t>(t.lights.size(), 63);
       t.lights.push_back(lt);
       brightest += glm::dvec3(light.color * m.kd);
     }

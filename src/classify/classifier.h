@@ -59,6 +59,11 @@ class Classifier {
   // normals depend on facing), or colours that may saturate.
   const ConeBatchTerms* cone_batch_terms(int material) const;
   const ShadeConstants& shade() const { return shade_; }
+  // Whether any light puts a specular term on this material, and the lights whose term alone
+  // may reach the threshold somewhere (bit i: light i; 63: 63 and up): a superset of what
+  // classify() reports for any of its triangles.
+  bool has_specular(int material) const { return materials_[material].has_specular; }
+  uint64_t highlight_lights(int material) const { return materials_[material].highlight_lights; }
 
  private:
   struct LightTerms {
@@ -72,6 +77,8 @@ class Classifier {
     std::vector<LightTerms> lights;
     double shininess;
     bool may_saturate;     // ambient + sum kd * colour can exceed 1 in some channel
+    bool has_specular = false;
+    uint64_t highlight_lights = 0;  // lights with spec_weight >= the threshold
   };
   struct Bounds {
     double specular = 0, diffuse = 0;

@@ -34,7 +34,7 @@ std::string RenderOptions::to_string() const {
     << " normals=" << normals << " gouraud=" << gouraud << " hidden_faces=" << hidden_faces;
   if (method == "auto")
     s << " spec_threshold=" << spec_threshold << " spec_method=" << spec_method
-      << " classifier=" << classifier;
+      << " classifier=" << classifier << " classify_min_px=" << classify_min_px;
   return s.str();
 }
 
@@ -66,7 +66,8 @@ void validate(const RenderOptions& o) {
     const RenderOptions defaults;
     for (const auto& [set, flag] : {std::pair{o.spec_threshold != defaults.spec_threshold, "--spec-threshold"},
                                     std::pair{o.spec_method != defaults.spec_method, "--spec-method"},
-                                    std::pair{o.classifier != defaults.classifier, "--classifier"}})
+                                    std::pair{o.classifier != defaults.classifier, "--classifier"},
+                                    std::pair{o.classify_min_px != defaults.classify_min_px, "--classify-min-px"}})
       if (set) throw InputError(flag, "applies to --method auto only");
   }
   if (const std::string why = method->refuse(o); !why.empty()) {
@@ -146,6 +147,8 @@ struct Renderer::Impl {
       classifier.emplace(frame.shade, ClassifierParams{o.spec_threshold, auto_gouraud_budget(o.max_error),
                                                        o.classifier == "paper"});
       setup.classifier = &*classifier;
+      // The literal rule is there to measure the paper's classifier: it classifies everything.
+      setup.classify_min_box_px = o.classifier == "paper" ? 0.0 : o.classify_min_px;
     }
     setup.viewport = make_viewport(scene.width, scene.height);
     setup.cull = scene.cull;
@@ -228,6 +231,7 @@ struct Renderer::Impl {
       tally.add(c.paths);
     }
     stats.paths.clear();
+    stats.triangles_unclassified = tally.unclassified;
     if (classified)
       for (int p = 1; p < kShadePathCount; ++p)
         stats.paths.push_back({kShadePathNames[p], tally.triangles[p], back_end.path_pixels[p]});

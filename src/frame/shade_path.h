@@ -21,8 +21,10 @@ inline constexpr const char* kShadePathNames[kShadePathCount] = {"unclassified",
 struct PathTally {
   std::array<long long, kShadePathCount> triangles{};
   uint64_t lights_with_highlight = 0;
+  long long unclassified = 0;  // of triangles[Specular]: sent there without classifying (dense blocks)
   void add(const PathTally& o) {
     for (int p = 0; p < kShadePathCount; ++p) triangles[p] += o.triangles[p];
+    unclassified += o.unclassified;
     lights_with_highlight |= o.lights_with_highlight;
   }
 };

@@ -30,8 +30,10 @@ class ChunkBuilder {
   // Decides in SIMD lanes the paths of source triangles sources[0, count) (classify/
   // cone_batch.h): planned[i] (and for Specular the lights reported), Unclassified where
   // classify() must look. Only triangles setup keeps are planned: a dense mesh culls half.
-  void plan_paths(const SceneGeometry& g, const uint32_t* sources, int count, ShadePath* planned,
-                  uint64_t* planned_lights) const {
+  // In a dense block, triangles of materials with a specular term take the specular path
+  // without a look, and the lights reported are all whose term alone may reach the threshold.
+  void plan_paths(const SceneGeometry& g, const uint32_t* sources, int count, bool dense, ShadePath* planned,
+                  uint64_t* planned_lights) {
     std::fill(planned, planned + count, ShadePath::Unclassified);
     if (!p_.classifier) return;
     alignas(64) double normals[9][kFateBlock];
@@ -41,7 +43,11 @@ class ChunkBuilder {
       const uint16_t material = g.triangle_material[sources[run]];
       int end = run + 1;
       while (end < count && g.triangle_material[sources[end]] == material) ++end;
-      if (const ConeBatchTerms* terms = p_.classifier->cone_batch_terms(material)) {
+      if (dense && p_.classifier->has_specular(material)) {
+        std::fill(planned + run, planned + end, ShadePath::Specular);
+        std::fill(planned_lights + run, planned_lights + end, p_.classifier->highlight_lights(material));
+        chunk_.paths.unclassified += end - run;
+      } else if (const ConeBatchTerms* terms = p_.classifier->cone_batch_terms(material)) {
         for (int i = run; i < end; ++i)
           for (int v = 0; v < 3; ++v) {
             const glm::vec3& n = attrs_.n_view[g.triangles[sources[i]][v]];
@@ -51,6 +57,17 @@ class ChunkBuilder {
       }
       run = end;
     }
+  }
+
+  // Whether the triangles that culling keeps are so small on screen (mean pixel box below
+  // classify_min_box_px) that classifying them would cost more than the specular path saves:
+  // there per-pixel Phong, lit through the tile's pixel queue, costs about what Gouraud does.
+  // A block is a fixed range of input triangles, and the mean is taken before hidden back
+  // faces are left out, so the answer is the same for any thread count, tile size or
+  // --hidden-faces.
+  bool dense(int64_t box_area_px, int count) const {
+    return p_.classify_min_box_px > 0.0 && count > 0 &&
+           static_cast<double>(box_area_px) < p_.classify_min_box_px * count;
   }
 
   // Culls, winds and bounds one triangle of snapped vertices (a clipped piece).
@@ -71,11 +88,13 @@ class ChunkBuilder {
     chunk_.dropped += fates.dropped;
     chunk_.culled += fates.culled;
     int kept = 0, hidden = 0;  // counted here: the chunk's counters in the loop made a chain of stores and loads
+    int64_t box_area_px = 0;
     uint32_t kept_source[kFateBlock];
     uint16_t kept_column[kFateBlock];
     for (int word = 0; word * 64 < count; ++word)
       for (uint64_t bits = fates.kept[word]; bits; bits &= bits - 1) {
         const int i = word * 64 + std::countr_zero(bits);
+        box_area_px += int64_t(fates.x1[i] - fates.x0[i] + 1) * (fates.y1[i] - fates.y0[i] + 1);
         const bool back_facing = (fates.back[word] >> (i % 64)) & 1;
         if (occlusion_.hidden(source[i], back_facing, {fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]})) {
           ++hidden;
@@ -88,7 +107,7 @@ class ChunkBuilder {
     chunk_.hidden += hidden;
     ShadePath planned[kFateBlock];
     uint64_t planned_lights[kFateBlock];
-    plan_paths(g, kept_source, kept, planned, planned_lights);
+    plan_paths(g, kept_source, kept, dense(box_area_px, kept + hidden), planned, planned_lights);
     for (int k = 0; k < kept; ++k) {
       const int i = kept_column[k];
       const auto& idx = g.triangles[kept_source[k]];

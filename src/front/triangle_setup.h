@@ -23,6 +23,9 @@ struct SetupParams {
   // its normals are a subset of the triangle's). Needs the mesh's n_view (and pos_view for
   // a local viewer).
   const Classifier* classifier = nullptr;
+  // A block of kFateBlock triangles whose kept ones' pixel boxes average below this area takes
+  // the specular path unclassified (RenderOptions::classify_min_px); 0: classify all.
+  double classify_min_box_px = 0.0;
   // This frame's self-occlusion plan: kept back faces that it proves hidden are culled.
   const SelfOcclusionPlan* occlusion = nullptr;
 };

@@ -40,6 +40,7 @@ inline constexpr RenderConfigKey kRenderConfigKeys[] = {
     {"spec_threshold", "--spec-threshold", &RenderOptions::spec_threshold, true},
     {"spec_method", "--spec-method", &RenderOptions::spec_method, true},
     {"classifier", "--classifier", &RenderOptions::classifier, true},
+    {"classify_min_px", "--classify-min-px", &RenderOptions::classify_min_px, true},
 };
 
 // Sets `key`'s option of `to` to its value in `from`.

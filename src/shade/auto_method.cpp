@@ -1,6 +1,8 @@
 // `auto`: the classifier's plan (classify/classifier.h) carried out. The front end marks each
 // triangle's shading path; here each path gets its kernel, chosen once per frame, and a tile
 // whose triangles share one path runs that kernel alone (exec/tile_executor.cpp).
+#include <cmath>
+
 #include "shade/methods.h"
 #include "shade/pixel_queue.h"
 
@@ -54,6 +56,9 @@ std::string auto_refuses(const RenderOptions& o) {
   if (!(o.spec_threshold >= 0.0 && o.spec_threshold <= 1.0))
     return "--spec-threshold: expected 0 to 1 (colour units; 1/510 is half an 8-bit step), got " +
            std::to_string(o.spec_threshold);
+  if (!(o.classify_min_px >= 0.0 && std::isfinite(o.classify_min_px)))
+    return "--classify-min-px: expected a finite number of pixels >= 0 (0: classify every triangle), got " +
+           std::to_string(o.classify_min_px);
   return {};
 }
 

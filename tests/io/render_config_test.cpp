@@ -47,6 +47,7 @@ TEST(RenderConfig, EveryOptionSurvivesARoundTrip) {
   o.spec_threshold = 1.0 / 255.0;  // not a short decimal: must come back bit for bit
   o.spec_method = "phong";
   o.classifier = "paper";
+  o.classify_min_px = 12.5;
   o.hidden_faces = "draw";
   const nlohmann::ordered_json provenance = {{"written_by", "test"}, {"table", {1, 2, 3}}};
   const RenderConfig back = parse(render_config_text(o, all_keys(), provenance));
@@ -81,7 +82,8 @@ TEST(RenderConfig, LoadsAFileAndNamesAMissingOne) {
 TEST(RenderConfig, UnknownKeysAreRefusedByName) {
   EXPECT_EQ(error_of(R"({"options": {"tile": 32, "tiles": 64}})"),
             "tuned.json: options.tiles: unknown key (expected one of: method, tile, threads, isa, srgb, "
-            "brdf, normals, gouraud, hidden_faces, max_error, spec_threshold, spec_method, classifier)");
+            "brdf, normals, gouraud, hidden_faces, max_error, spec_threshold, spec_method, classifier, "
+            "classify_min_px)");
   EXPECT_EQ(error_of(R"({"options": {}, "comment": "x"})"),
             "tuned.json: comment: unknown key (expected one of: options, provenance)");
   EXPECT_EQ(error_of(R"({"provenance": {}})"),

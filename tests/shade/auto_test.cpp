@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -36,11 +37,12 @@ RenderOptions with_method(const std::string& method) {
   return o;
 }
 
-// Renders `auto` and `reference`, checks the issue's accuracy figures and the plan's sums.
-void expect_auto_within_budget(const Scene& scene, const std::string& name) {
+void expect_auto_within_budget(const Scene& scene, const Image& exact, double classify_min_px,
+                               const std::string& name) {
+  RenderOptions o = with_method("auto");
+  o.classify_min_px = classify_min_px;
   RenderStats stats;
-  const Image fast = render(scene, with_method("auto"), 1, &stats);
-  const Image exact = render(scene, with_method("reference"));
+  const Image fast = render(scene, o, 1, &stats);
   const ImageDiff diff = compare_images(to_float(fast), to_float(exact));
   // pct_over_1lsb is over all pixels; the issue's 99.9 % is over covered ones.
   const double covered_share = double(stats.covered_pixels) / (double(scene.width) * scene.height);
@@ -51,6 +53,16 @@ void expect_auto_within_budget(const Scene& scene, const std::string& name) {
   long long path_pixels = 0;
   for (const PathStats& p : stats.paths) path_pixels += p.pixels;
   EXPECT_EQ(path_pixels, stats.covered_pixels) << name << ": every visible pixel belongs to one path";
+}
+
+// Renders `auto` and `reference`, checks the issue's accuracy figures and the plan's sums: at
+// the defaults, and with every triangle classified (a small image makes most meshes' blocks
+// dense, which would leave the classifier out).
+void expect_auto_within_budget(const Scene& scene, const std::string& name) {
+  const Image exact = render(scene, with_method("reference"));
+  for (double classify_min_px : {RenderOptions().classify_min_px, 0.0})
+    expect_auto_within_budget(scene, exact, classify_min_px,
+                              name + " --classify-min-px " + std::to_string(int(classify_min_px)));
 }
 
 TEST(Auto, SceneFilesWithinOneLsbOfReference) {
@@ -161,6 +173,58 @@ TEST(Auto, OptionsForAutoAreRefusedByOtherMethods) {
   o = with_method("auto");
   o.classifier = "magic";
   EXPECT_THROW(validate(o), InputError);
+  o = with_method("phong");
+  o.classify_min_px = 10;
+  EXPECT_THROW(validate(o), InputError);
+  for (double bad : {-1.0, std::nan(""), HUGE_VAL}) {
+    o = with_method("auto");
+    o.classify_min_px = bad;
+    EXPECT_THROW(validate(o), InputError) << bad;
+  }
+}
+
+// Blocks of triangles smaller on screen than --classify-min-px take the specular path without
+// a look: with a bound larger than any box every triangle does, and `auto` is its specular
+// method exactly, saying so; with 0 the classifier looks at every triangle.
+TEST(Auto, DenseBlocksTakeTheSpecularPathUnclassified) {
+  const Scene scene = load_scene(kScenes / "default.json");
+  for (const char* spec_method : {"hybrid", "phong"}) {
+    RenderOptions o = with_method("auto");
+    o.spec_method = spec_method;
+    o.classify_min_px = 1e9;
+    RenderStats stats;
+    const Image a = render(scene, o, 1, &stats);
+    EXPECT_EQ(a.rgb, render(scene, with_method(spec_method)).rgb) << spec_method;
+    long long specular = 0;
+    for (const PathStats& p : stats.paths)
+      if (p.name == "specular") specular = p.triangles;
+      else EXPECT_EQ(p.triangles, 0) << p.name;
+    EXPECT_GT(stats.triangles_unclassified, 0);
+    EXPECT_EQ(stats.triangles_unclassified, specular);
+    EXPECT_TRUE(mentions(stats, "specular path without classification"));
+  }
+  RenderOptions o = with_method("auto");
+  o.classify_min_px = 0;
+  RenderStats stats;
+  render(scene, o, 1, &stats);
+  EXPECT_EQ(stats.triangles_unclassified, 0);
+  EXPECT_FALSE(mentions(stats, "without classification"));
+}
+
+// A material without a specular term is classified even in a dense block: the specular path
+// would only add work there.
+TEST(Auto, DenseBlocksWithoutSpecularAreStillClassified) {
+  const Scene scene = parse_scene(
+      one_sphere_scene(R"([{"direction": [0, 0, 1], "color": [1, 1, 1]}])", "0"), "ks0", ".");
+  RenderOptions o = with_method("auto");
+  o.classify_min_px = 1e9;
+  RenderStats stats;
+  render(scene, o, 1, &stats);
+  EXPECT_EQ(stats.triangles_unclassified, 0);
+  for (const PathStats& p : stats.paths)
+    if (p.name == "specular") {
+      EXPECT_EQ(p.triangles, 0);
+    }
 }
 
 }  // namespace
