@@ -27,8 +27,11 @@ struct RenderOptions {
   std::string classifier = "bound";    // auto: bound (error-checked) | paper (the literal rule)
   // auto (bound): a block of triangles whose screen boxes average fewer pixels than this takes
   // the specular path unclassified, where classifying would cost more than it saves; 0:
-  // classify every triangle (limits::kClassifyMinBoxPx says why the default)
-  double classify_min_px = 40.0;
+  // classify every triangle. 80: the 1080p bunny (boxes of about 30 px) ran 1.26x gouraud
+  // with 40 and 1.16-1.19x with 80 against 1.26-1.34x classified, and meshes with larger
+  // triangles (cow, teapot, dragon_11k, spot) did not change beyond noise (docs/CLASSIFIER.md,
+  // "Dense blocks")
+  double classify_min_px = 80.0;
   // skip: back faces that their own closed (or capped) mesh provably hides are culled at setup
   // (front/self_occlusion.h); draw: every face is drawn, as a z-buffer without it would
   std::string hidden_faces = "skip";

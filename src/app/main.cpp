@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
                 "auto: bound (error-checked, default) or paper (highlight -> specular, rest -> Gouraud)");
   r->add_option("--classify-min-px", render.options.classify_min_px,
                 "auto: blocks of triangles whose screen boxes average fewer pixels than this take the "
-                "specular path unclassified, as classifying costs more than it saves there (default 40; "
+                "specular path unclassified, as classifying costs more than it saves there (default 80; "
                 "0: classify every triangle)");
   r->add_option("--hidden-faces", render.options.hidden_faces,
                 "skip (default): cull back faces their own closed mesh provably hides; draw: draw every face");
