@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <sstream>
 
 namespace fastshade {
 
@@ -49,11 +50,14 @@ std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeCons
       if (!(f.tally->lights_with_highlight >> i & 1))
         out.push_back("light " + std::to_string(i) + ": reaches no triangle's highlight above --spec-threshold");
     const auto& t = f.tally->triangles;
-    if (f.tally->unclassified > 0)
+    if (f.tally->unclassified > 0) {
+      std::ostringstream bound;  // as typed: 80, 12.5
+      bound << o.classify_min_px;
       out.push_back(plural(f.tally->unclassified, "triangle") + " in blocks whose screen boxes average under " +
-                    std::to_string(static_cast<long long>(o.classify_min_px)) +
+                    bound.str() +
                     " px: specular path without classification, which would cost more than it saves "
                     "(--classify-min-px 0 classifies them)");
+    }
     if (t[static_cast<int>(ShadePath::Specular)] == 0)
       out.push_back("no triangle can show a highlight: no specular code ran");
     if (t[static_cast<int>(ShadePath::PixelDiffuse)] == 0 && t[static_cast<int>(ShadePath::Specular)] == 0)
