@@ -55,8 +55,11 @@ class Calibration : public fastshade::test::CliFixture {
 TEST_F(Calibration, PicksAConfigurationWithinTheBudgetAndSaysWhich) {
   const json c = calibrated("1");
   const std::string picked = c["picked"];
-  // One line says it, before render's own summary line.
-  EXPECT_TRUE(out_.starts_with("calibration: picked " + picked + ": ")) << out_;
+  // One line says it, before render's own summary line (and says so when the noise guard kept
+  // render's default, which on this frame of tiny triangles is often as fast as the best).
+  EXPECT_TRUE(out_.starts_with("calibration: picked " + picked + ": ") ||
+              out_.starts_with("calibration: picked " + picked + " (render's default): "))
+      << out_;
   EXPECT_NE(out_.find("(budget 1 LSB)"), std::string::npos) << out_;
   EXPECT_EQ(json::parse(slurp(stats_))["method"], picked.substr(0, picked.find(' ')));
 
