@@ -27,8 +27,8 @@ struct RenderOptions {
   std::string classifier = "bound";    // auto: bound (error-checked) | paper (the literal rule)
   // auto (bound): a block of triangles whose screen boxes average fewer pixels than this takes
   // the specular path unclassified, where classifying would cost more than it saves; 0:
-  // classify every triangle. 80: the 1080p bunny (boxes of about 30 px) ran 1.26x gouraud
-  // with 40 and 1.16-1.19x with 80 against 1.26-1.34x classified, and meshes with larger
+  // classify every triangle. 80: the 1080p bunny (boxes of about 30 px) ran 1.25-1.28x gouraud
+  // with 40 and 1.13-1.19x with 80 against 1.21-1.42x classified, and meshes with larger
   // triangles (cow, teapot, dragon_11k, spot) did not change beyond noise (docs/CLASSIFIER.md,
   // "Dense blocks")
   double classify_min_px = 80.0;

@@ -1,5 +1,6 @@
 // The render configurations `fastshade tune` sweeps (method x tile, and for `auto` x threshold x
-// specular kernel x classifier x dense-block bound), also the `auto` part of `render --max-error`'s calibration.
+// specular kernel x classifier x dense-block bound), also the `auto` part of `render
+// --max-error`'s calibration.
 #pragma once
 #include <cstddef>
 #include <string>
