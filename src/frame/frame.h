@@ -56,6 +56,11 @@ inline constexpr int kSierpinskiShift = 1;
 // method does not classify.
 inline constexpr int kShadePathShift = 4;
 inline constexpr uint16_t kShadePathMask = 3 << kShadePathShift;
+// Bits 6-8: log2 of the triangle's hybrid segment length in pixels (classify/segment_step.h),
+// decided once by the front end where the frame draws hybrid segments; 0 (per-pixel Phong)
+// elsewhere.
+inline constexpr int kSegmentStepShift = 6;
+inline constexpr uint16_t kSegmentStepMask = 7 << kSegmentStepShift;
 static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
 
 // One chunk of the front end's work: the triangles it set up (in draw order) and the vertex
@@ -104,6 +109,9 @@ struct Frame {
 
   static ShadePath path_of(const SetupTriangle& t) {
     return static_cast<ShadePath>((t.flags & kShadePathMask) >> kShadePathShift);
+  }
+  static int segment_step_px(const SetupTriangle& t) {
+    return 1 << ((t.flags & kSegmentStepMask) >> kSegmentStepShift);
   }
   const SetupTriangle& triangle(uint32_t entry) const {
     return chunks[entry >> kBinIndexBits].triangles[entry & ((1u << kBinIndexBits) - 1)];

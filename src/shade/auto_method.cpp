@@ -48,6 +48,10 @@ TileDraw select_auto(const ShadeConstants& k, const RenderOptions& o) {
   return draw;
 }
 
+SegmentSteps auto_segment_steps(const RenderOptions& o) {
+  return o.spec_method == "hybrid" ? SegmentSteps::SpecularPath : SegmentSteps::None;
+}
+
 std::string auto_refuses(const RenderOptions& o) {
   if (o.spec_method != "hybrid" && o.spec_method != "phong")
     return "--spec-method: expected hybrid or phong, got '" + o.spec_method + "'";

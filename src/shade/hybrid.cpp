@@ -1,5 +1,6 @@
 // `hybrid`: Phong at the ends of segments of 2^m pixels along a row, linear in between, m
-// chosen per triangle from the normal's turn and the highlight's nearness (shade/hybrid.h).
+// chosen per triangle from the normal's turn and the highlight's nearness (classify/
+// segment_step.h), by the front end (front/segment_steps.h).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shade/hybrid.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -10,19 +11,13 @@
 #include <hwy/highway.h>
 
 #include "shade/brdf_variants.h"
-#include "shade/hybrid.h"
+#include "classify/segment_step.h"
 #include "shade/methods.h"
 #include "shade/phong-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
-
-// Triangles narrower than this (whole bounding box, not the tile's part of it, so that every
-// tile decides alike) take per-pixel Phong: a segment end costs as much as a pixel, and a
-// batch of rows has a fixed cost. Measured (docs/PERFORMANCE.md, session 4): 16 beat 8 on both
-// the bunny (0.95x) and the spot 4K frame (0.99x).
-inline constexpr int kHybridMinWidthPx = 16;
 
 // The rows of one triangle in one tile, with their segment ends shaded together: a row of a
 // small triangle has only a few ends, which alone would fill a fraction of a vector (on a
@@ -159,22 +154,10 @@ void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int 
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
-  const ShadeConstants& k = frame.shade;
   HybridRows<kLocal, kSrgb, kBrdf> rows;  // started once `in` is ready
   DrawByRowRuns<kLocal, kSrgb, kBrdf>(
       frame, entry, tt, kHybridMinWidthPx,
-      [&](const PhongSpanInput& in) {
-        const SetupTriangle& t = frame.triangle(entry);
-        TriangleNormals normals;
-        const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
-        for (int i = 0; i < 3; ++i) {
-          normals.n[i] = flip * frame.vertex(entry, t.attr[i], &AttrArrays::n_view);
-          normals.inv_w[i] = t.inv_w[i];
-          normals.pos_view[i] =
-              kLocal ? frame.vertex(entry, t.attr[i], &AttrArrays::pos_view) : glm::vec3(0.0f);
-        }
-        rows.start(in, hybrid_triangle_step(in, normals, k.hybrid_tolerance));
-      },
+      [&](const PhongSpanInput& in) { rows.start(in, Frame::segment_step_px(frame.triangle(entry))); },
       [&](const PhongSpanInput&, int xl, int xr, int py, int x0, int x1, RowTarget row) {
         rows.add(py, xl, xr, x0, x1, row);
       },

@@ -8,6 +8,11 @@ namespace fastshade {
 
 namespace {
 
+template <SegmentSteps kSteps>
+SegmentSteps steps(const RenderOptions&) {
+  return kSteps;
+}
+
 template <DrawTriangleFn (*kSelect)(const ShadeConstants&)>
 TileDraw select_one(const ShadeConstants& shade, const RenderOptions&) {
   return {kSelect(shade)};
@@ -18,18 +23,19 @@ const std::array kMethods = {
            "the classifier's plan: diffuse-only Gouraud where no highlight can show and "
            "interpolation stays within --max-error, per-pixel diffuse where it would not, "
            "--spec-method where a highlight may show (docs/CLASSIFIER.md)",
-           auto_needs, select_auto, auto_refuses, true},
+           auto_needs, select_auto, auto_refuses, true, auto_segment_steps},
     Method{"reference",
            "per-pixel Blinn-Phong in double precision from exact barycentrics: the yardstick",
-           reference_needs, select_one<select_reference>, reference_refuses, false},
+           reference_needs, select_one<select_reference>, reference_refuses, false,
+           steps<SegmentSteps::None>},
     Method{"phong", "per-pixel Blinn-Phong in float with exact pow, as a GL fragment shader does",
-           phong_needs, select_one<select_phong>, accepts_all, false},
+           phong_needs, select_one<select_phong>, accepts_all, false, steps<SegmentSteps::None>},
     Method{"hybrid",
            "Phong at the ends of 2^m-pixel segments, linear between, m adapted per triangle "
            "to --max-error",
-           phong_needs, select_one<select_hybrid>, refuses_normals, false},
+           phong_needs, select_one<select_hybrid>, refuses_normals, false, steps<SegmentSteps::All>},
     Method{"gouraud", "Blinn-Phong per vertex, colour interpolated perspective-correctly",
-           gouraud_needs, select_one<select_gouraud>, refuses_normals, false},
+           gouraud_needs, select_one<select_gouraud>, refuses_normals, false, steps<SegmentSteps::None>},
 };
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "fastshade/render.h"
 #include "frame/frame.h"
+#include "front/segment_steps.h"
 #include "front/vertex_stage.h"
 #include "raster/spans.h"
 
@@ -55,6 +56,8 @@ struct Method {
   std::string (*refuse)(const RenderOptions& options);
   // Whether the front end classifies triangles into shading paths for this method.
   bool classifies;
+  // Which triangles the front end gives a hybrid segment length (front/segment_steps.h).
+  SegmentSteps (*segment_steps)(const RenderOptions& options);
 };
 
 std::span<const Method> all_methods();

@@ -33,6 +33,7 @@ DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants& shade);
 AttrNeeds auto_needs(const ShadeConstants& shade);
 TileDraw select_auto(const ShadeConstants& shade, const RenderOptions& options);
 std::string auto_refuses(const RenderOptions& options);
+SegmentSteps auto_segment_steps(const RenderOptions& options);
 
 DrawTriangleFn select_hybrid(const ShadeConstants& shade);
 

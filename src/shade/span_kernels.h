@@ -78,7 +78,7 @@ void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, 
 void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
 // [xl, xr]: the row's whole covered run in the triangle; [x0, x1]: the part to shade.
 struct HybridRun {
-  int step;  // segment length for the triangle (shade/hybrid.h), 1 = per-pixel Phong
+  int step;  // segment length for the triangle (classify/segment_step.h), 1 = per-pixel Phong
   int xl, xr;
 };
 void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);

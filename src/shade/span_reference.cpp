@@ -6,7 +6,7 @@
 #include "shade/diffuse_quotient.h"
 #include "shade/fast_math.h"
 #include "shade/method.h"
-#include "shade/hybrid.h"
+#include "classify/segment_step.h"
 #include "shade/normal_blocks.h"
 #include "shade/pixel_queue.h"
 #include "shade/span_kernels.h"

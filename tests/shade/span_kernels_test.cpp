@@ -9,11 +9,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "classify/segment_step.h"
 #include "exec/isa.h"
 #include "frame/edge_function.h"
 #include "shade/brdf.h"
 #include "shade/diffuse_quotient.h"
-#include "shade/hybrid.h"
 #include "shade/normal_blocks.h"
 #include "shade/span_kernels.h"
 
@@ -382,15 +382,12 @@ TEST(HybridStep, FollowsCurvatureAndHighlights) {
   std::mt19937 rng(3);
   const Fixture f = random_triangle(rng);
   auto step_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) {
-    TriangleNormals tn{{glm::normalize(n0), glm::normalize(n1), glm::normalize(n2)},
-                       {f.tri.inv_w[0], f.tri.inv_w[1], f.tri.inv_w[2]}, {}};
-    PhongSpanInput in;
-    for (int c = 0; c < 3; ++c)
-      in.n[c] = make_plane(f.bary, double(tn.n[0][c]) * tn.inv_w[0], double(tn.n[1][c]) * tn.inv_w[1],
-                           double(tn.n[2][c]) * tn.inv_w[2]);
+    SegmentStepInput in{{glm::normalize(n0), glm::normalize(n1), glm::normalize(n2)},
+                        {f.tri.inv_w[0], f.tri.inv_w[1], f.tri.inv_w[2]}};
+    for (int v = 0; v < 3; ++v) in.n_over_w_dx += (dvec3(in.n[v]) * double(in.inv_w[v])) * f.bary.d_dx[v];
     in.material = &m;
     in.shade = &k;
-    return hybrid_triangle_step(in, tn, hybrid_tolerance(1.0));
+    return hybrid_triangle_step(in, hybrid_tolerance(1.0));
   };
   // Equal normals: nothing to interpolate wrongly, the longest segments.
   EXPECT_EQ(step_for({0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1}), 16);
@@ -402,10 +399,10 @@ TEST(HybridStep, FollowsCurvatureAndHighlights) {
             step_for({0.4f, 0, 1}, {-0.4f, 0.3f, 1}, {0, -0.4f, 1}));
   EXPECT_GT(step_for({1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f}), 1);
   // No budget: always per pixel.
-  PhongSpanInput in;
+  SegmentStepInput in;
   in.material = &m;
   in.shade = &k;
-  EXPECT_EQ(hybrid_triangle_step(in, TriangleNormals{}, 0.0f), 1);
+  EXPECT_EQ(hybrid_triangle_step(in, 0.0f), 1);
 }
 
 }  // namespace

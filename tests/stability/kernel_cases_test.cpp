@@ -12,12 +12,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "classify/segment_step.h"
 #include "exec/isa.h"
 #include "frame/edge_function.h"
 #include "raster/spans.h"
 #include "shade/brdf.h"
 #include "shade/fast_math.h"
-#include "shade/hybrid.h"
 #include "shade/lighting.h"
 #include "shade/method.h"
 #include "shade/normal_blocks.h"
@@ -340,17 +340,16 @@ TEST_F(StabilityKernels, NormalsTooShortToNormaliseShadeAsZero) {
 TEST(StabilityHybridStep, EqualNearlyEqualAndAntiparallelNormals) {
   const Lighting light(1000);
   auto step_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) {
-    TriangleNormals tn{{n0, n1, n2}, {1, 1, 1}, {}};
+    SegmentStepInput in{{n0, n1, n2}, {1, 1, 1}};
     SetupTriangle t{};
     const int32_t x[3] = {0, 64 * 256, 0}, y[3] = {0, 0, 64 * 256};
     for (int i = 0; i < 3; ++i) t.x_fx[i] = x[i], t.y_fx[i] = y[i];
-    if (doubled_area(t) < 0) std::swap(t.y_fx[1], t.y_fx[2]), std::swap(tn.n[1], tn.n[2]);
+    if (doubled_area(t) < 0) std::swap(t.y_fx[1], t.y_fx[2]), std::swap(in.n[1], in.n[2]);
     const Barycentrics b = barycentrics(t, triangle_edges(t));
-    PhongSpanInput in;
-    for (int c = 0; c < 3; ++c) in.n[c] = make_plane(b, tn.n[0][c], tn.n[1][c], tn.n[2][c]);
+    for (int v = 0; v < 3; ++v) in.n_over_w_dx += dvec3(in.n[v]) * b.d_dx[v];
     in.material = &light.m;
     in.shade = &light.k;
-    return hybrid_triangle_step(in, tn, hybrid_tolerance(1.0));
+    return hybrid_triangle_step(in, hybrid_tolerance(1.0));
   };
   const glm::vec3 h(light.h());
   const glm::vec3 e = glm::normalize(glm::cross(h, glm::vec3(0, 1, 0)));

@@ -1,11 +1,11 @@
+#include "classify/segment_step.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
-#include "classify/highlight_bound.h"
 #include "core/limits.h"
-#include "shade/hybrid.h"
 
 namespace fastshade {
 
@@ -21,9 +21,9 @@ struct ViewMotion {
   double spread = 0, turn_per_px = 0;
 };
 
-ViewMotion view_motion(const PhongSpanInput& in, const TriangleNormals& tri) {
+ViewMotion view_motion(const SegmentStepInput& tri) {
   ViewMotion m;
-  const dvec3 dq_dx(in.p[0].gx, in.p[1].gx, in.p[2].gx);
+  const dvec3& dq_dx = tri.pos_over_w_dx;
   dvec3 centre(0.0);
   for (int i = 0; i < 3; ++i) {
     m.v[i] = glm::normalize(-dvec3(tri.pos_view[i]));
@@ -43,7 +43,7 @@ constexpr double kMinHalfVectorLength = 1e-3;
 
 }  // namespace
 
-int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, float tol) {
+int hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   constexpr int kBlock = limits::kSeedBlockPx;
   if (!(tol > 0)) return 1;
   // Along a row the interpolated q = n/w is affine, q(x) = q0 + g x, and the drawn normal is
@@ -56,7 +56,7 @@ int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, f
   const dvec3 n_d[3] = {dvec3(tri.n[0]), dvec3(tri.n[1]), dvec3(tri.n[2])};
   const double q_min = std::min({tri.inv_w[0], tri.inv_w[1], tri.inv_w[2]}) * min_length_over_triangle(n_d);
   if (!(q_min > 0.0)) return 1;
-  const dvec3 g(in.n[0].gx, in.n[1].gx, in.n[2].gx);
+  const dvec3& g = tri.n_over_w_dx;
   double g_across = glm::length(g);
   if (const NormalCone cone(n_d); cone.cos_half > 0.0) {
     const double s_axis = glm::dot(g, cone.axis);
@@ -72,18 +72,18 @@ int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, f
   // constant <= 1 in the angle: a kink term ks a / 2. A local viewer's H moves too: by V's
   // spread over the triangle (lowering the angle c_max comes from) and by its turn along x,
   // which adds to the angle N turns against H (docs/STABILITY.md, "B2").
-  const MaterialConstants& m = *in.material;
+  const MaterialConstants& m = *tri.material;
   const double kd = std::max({m.kd.r, m.kd.g, m.kd.b}), ks = std::max({m.ks.r, m.ks.g, m.ks.b});
   const double n = m.shininess_d;
   double bend = 0.0, slope = 0.0, kink = 0.0, h_turn = 0.0;  // weights of |u'|^2, |dC|, kinks
   ViewMotion view;
-  if (in.shade->local_viewer) view = view_motion(in, tri);
-  for (const LightView& light : in.shade->lights) {
+  if (tri.shade->local_viewer) view = view_motion(tri);
+  for (const LightView& light : tri.shade->lights) {
     const double weight = std::max({light.color.r, light.color.g, light.color.b});
     const dvec3 l(light.l_view);
     dvec3 h(light.h_view);
     double h_spread = 0.0;
-    if (in.shade->local_viewer) {
+    if (tri.shade->local_viewer) {
       // H = (L + V) / |L + V| moves by at most V's motion over |L + V|, smallest where L.V is.
       const double lv_min = -max_dot_over_triangle(view.v, -l);
       const double half_length = std::sqrt(std::max(0.0, 2.0 + 2.0 * lv_min));
@@ -93,13 +93,15 @@ int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, f
       h_turn = std::max(h_turn, view.turn_per_px / half_length);
     }
     const double c_centre = std::clamp(max_dot_over_triangle(n_d, h), -1.0, 1.0);
-    const double c_max = std::cos(std::max(0.0, std::acos(c_centre) - h_spread));
+    // An infinite viewer's H is fixed (h_spread = 0): c_centre itself, without acos and cos.
+    const double c_max = h_spread > 0.0 ? std::cos(std::max(0.0, std::acos(c_centre) - h_spread)) : c_centre;
     if (ks > 0.0 && c_max > 0.0) {
       if (n < 2.0) {
         kink += weight * ks * 0.5;
       } else {
-        bend += weight * ks * n * (n - 1.0) * std::pow(c_max, n - 2.0);
-        slope += weight * ks * n * std::pow(c_max, n - 1.0);
+        const double c_pow = std::pow(c_max, n - 2.0);
+        bend += weight * ks * n * (n - 1.0) * c_pow;
+        slope += weight * ks * n * c_pow * c_max;
       }
     }
     slope += weight * kd;

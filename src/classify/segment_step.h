@@ -1,25 +1,36 @@
-// Hybrid Gouraud/Phong segments (the paper, section II; NOTES.md section 6): along a row,
-// Phong at segment ends 2^m pixels apart and linear in between, with m chosen per triangle so
-// that linear interpolation stays within the error budget.
+// Hybrid Gouraud/Phong segments (the paper, section II; NOTES.md section 6): the segment
+// length of a triangle, decided once per triangle by the front end (front/segment_steps.h) and
+// read by the hybrid kernel (shade/hybrid.cpp) in every tile the triangle covers.
 #pragma once
 #include <algorithm>
 
 #include <glm/vec3.hpp>
 
-#include "shade/span_kernels.h"
+#include "classify/highlight_bound.h"
+#include "frame/shade_constants.h"
 
 namespace fastshade {
 
-// What the step decision needs of a triangle beyond its planes: unit vertex normals (view
-// space, flipped for two-sided back faces), 1/w at the vertices and, for a local viewer, their
-// view-space positions.
-struct TriangleNormals {
+// Triangles narrower than this (whole bounding box, not a tile's part of it, so that every
+// tile decides alike) take per-pixel Phong: a segment end costs as much as a pixel, and a
+// batch of rows has a fixed cost. Measured (docs/PERFORMANCE.md, session 4): 16 beat 8 on both
+// the bunny (0.95x) and the spot 4K frame (0.99x).
+inline constexpr int kHybridMinWidthPx = 16;
+
+// What the step decision needs of a triangle: unit vertex normals (view space, flipped for
+// two-sided back faces), 1/w at the vertices and, for a local viewer, their view-space
+// positions; and how the interpolated n/w and p/w change per pixel along x (the planes' x
+// gradients, raster/planes.h).
+struct SegmentStepInput {
   glm::vec3 n[3];
   float inv_w[3];
   glm::vec3 pos_view[3];
+  dvec3 n_over_w_dx{0.0}, pos_over_w_dx{0.0};
+  const MaterialConstants* material = nullptr;
+  const ShadeConstants* shade = nullptr;
 };
 
-// The segment length (16, 8, 4, 2 or 1 px) for a whole triangle, decided once at setup.
+// The segment length (16, 8, 4, 2 or 1 px) for a whole triangle.
 //
 // A segment of L pixels errs, linearly interpolated, by at most L^2 / 8 * max |f''| along
 // the row, plus kd |u'| L / 4 where the terminator's kink crosses it. |f''| is bounded over
@@ -27,14 +38,14 @@ struct TriangleNormals {
 // normals, over the smallest |n/w| anywhere on the triangle), the rate's change |u''|, and the
 // colour's derivatives at c_max = max N.H (edges' closed-form maxima, NOTES.md section 2, or
 // 1 when H lies inside the normals' cone); summed over lights weighted by |colour|
-// (derivation in hybrid_step.cpp; docs/CLASSIFIER.md says what the earlier estimate missed).
+// (derivation in segment_step.cpp; docs/CLASSIFIER.md says what the earlier estimate missed).
 // A local viewer's H moves too: by the view direction's spread over the triangle and its turn
 // along x (docs/STABILITY.md, "B2").
 // The longest L whose bound is within tol wins. One fixed length per object fails badly
 // (NOTES.md: 19 LSB seen); this adapts to the triangle's curvature and to how near it is to a
 // highlight. A decision per 16-px block was measured first and cost more than the Phong
 // evaluations it saved on small triangles (3x phong's time on the 4K spot frame).
-int hybrid_triangle_step(const PhongSpanInput& in, const TriangleNormals& tri, float tol);
+int hybrid_triangle_step(const SegmentStepInput& in, float tol);
 
 // --max-error in LSB to the interpolation tolerance in colour units: half an LSB goes to the
 // final rounding, so that the rounded result stays within max_error of exact Phong.

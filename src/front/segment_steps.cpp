@@ -1,0 +1,44 @@
+#include "front/segment_steps.h"
+
+#include <bit>
+#include <vector>
+
+#include "classify/segment_step.h"
+#include "frame/edge_function.h"
+#include "raster/planes.h"
+
+namespace fastshade {
+
+void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last, SegmentSteps which) {
+  if (which == SegmentSteps::None) return;
+  const ShadeConstants& k = frame.shade;
+  std::vector<SetupTriangle>& triangles = frame.chunks[chunk].triangles;
+  for (uint32_t i = first; i < last; ++i) {
+    SetupTriangle& t = triangles[i];
+    if (t.px_max[0] - t.px_min[0] + 1 < kHybridMinWidthPx) continue;
+    if (which == SegmentSteps::SpecularPath && Frame::path_of(t) != ShadePath::Specular) continue;
+    const uint32_t entry = bin_entry(chunk, i);
+    // The kernel's planes interpolate flip * n / w and p / w (shade/phong-inl.h
+    // set_up_phong_planes); their x gradients, in double, from the barycentrics' exact ones.
+    const float flip = (k.two_sided && (t.flags & kBackFacing)) ? -1.0f : 1.0f;
+    const Barycentrics b = barycentrics(t, triangle_edges(t));
+    SegmentStepInput in;
+    in.material = &k.materials[t.material];
+    in.shade = &k;
+    for (int v = 0; v < 3; ++v) {
+      in.n[v] = flip * frame.vertex(entry, t.attr[v], &AttrArrays::n_view);
+      in.inv_w[v] = t.inv_w[v];
+      in.n_over_w_dx += (dvec3(in.n[v]) * double(t.inv_w[v])) * b.d_dx[v];
+      if (k.local_viewer) {
+        in.pos_view[v] = frame.vertex(entry, t.attr[v], &AttrArrays::pos_view);
+        in.pos_over_w_dx += (dvec3(in.pos_view[v]) * double(t.inv_w[v])) * b.d_dx[v];
+      } else {
+        in.pos_view[v] = glm::vec3(0.0f);
+      }
+    }
+    const int step = hybrid_triangle_step(in, k.hybrid_tolerance);
+    t.flags = static_cast<uint16_t>((t.flags & ~kSegmentStepMask) | (std::countr_zero(unsigned(step)) << kSegmentStepShift));
+  }
+}
+
+}  // namespace fastshade

@@ -1,0 +1,22 @@
+// Front end, after setup: hybrid's segment length per triangle (classify/segment_step.h),
+// decided once and kept in the triangle's record. The hybrid kernel draws a triangle in every
+// tile it covers, about 2.5 tiles a triangle on the 4K spot frame, and deciding there cost
+// each of them 0.4 us (docs/PERFORMANCE.md, session 18).
+#pragma once
+#include <cstdint>
+
+#include "frame/frame.h"
+
+namespace fastshade {
+
+// Which triangles of a frame draw hybrid segments: none, all (`hybrid`), or those on the
+// specular path (`auto` with --spec-method hybrid).
+enum class SegmentSteps : uint8_t { None, All, SpecularPath };
+
+// Decides the segment length of triangles [first, last) of chunk `chunk` and writes it into
+// their flags (frame/frame.h kSegmentStepMask). Triangles narrower than kHybridMinWidthPx,
+// which the kernel draws per pixel, and triangles of other paths keep 0 (per-pixel Phong).
+// A pure function of the triangle: the same for any thread count or tile size.
+void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last, SegmentSteps which);
+
+}  // namespace fastshade

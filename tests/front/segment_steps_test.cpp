@@ -1,0 +1,123 @@
+// The front end's segment lengths: decided once per triangle from the planes the hybrid
+// kernel interpolates, left at per-pixel Phong where the kernel draws per pixel, and used by
+// the kernel in every tile.
+#include "front/segment_steps.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include <glm/geometric.hpp>
+
+#include "classify/segment_step.h"
+#include "fastshade/render.h"
+#include "fastshade/scene.h"
+#include "frame/edge_function.h"
+#include "raster/planes.h"
+#include "shade/brdf.h"
+
+namespace fastshade {
+namespace {
+
+// One light along +z, so H = +z for the infinite viewer; n = 100, ks = 0.5.
+struct StepFrame {
+  Frame frame;
+  StepFrame() {
+    frame.shade.lights.push_back({glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(1.0f)});
+    const double n = 100;
+    frame.shade.materials.push_back({glm::vec3(0.6f), glm::vec3(0.5f), float(n), n, make_brdf(BrdfChoice{}, n)});
+    frame.shade.hybrid_tolerance = hybrid_tolerance(1.0);
+    frame.chunks.resize(1);
+  }
+  // A right triangle `side_px` pixels on a side at (8, 8), with these vertex normals and 1/w.
+  void add(float side_px, glm::vec3 n0, glm::vec3 n1, glm::vec3 n2, ShadePath path = ShadePath::Unclassified) {
+    const uint32_t first = static_cast<uint32_t>(frame.attrs.n_view.size());
+    for (const glm::vec3& n : {n0, n1, n2}) frame.attrs.n_view.push_back(glm::normalize(n));
+    SetupTriangle t{};
+    const int32_t one = limits::kSubpixelOne, side = static_cast<int32_t>(side_px * one);
+    const int32_t x[3] = {8 * one, 8 * one + side, 8 * one}, y[3] = {8 * one, 8 * one, 8 * one + side};
+    for (int i = 0; i < 3; ++i) {
+      t.x_fx[i] = x[i], t.y_fx[i] = y[i];
+      t.depth[i] = 0.5f;
+      t.inv_w[i] = 1.0f / (1.0f + 0.25f * i);
+      t.attr[i] = first + i;
+    }
+    if (doubled_area(t) < 0) std::swap(t.y_fx[1], t.y_fx[2]), std::swap(t.attr[1], t.attr[2]), std::swap(t.x_fx[1], t.x_fx[2]);
+    ASSERT_GT(doubled_area(t), 0);
+    t.px_min[0] = t.px_min[1] = 8;
+    t.px_max[0] = t.px_max[1] = static_cast<int16_t>(8 + side_px - 1);
+    t.flags = static_cast<uint16_t>(static_cast<int>(path) << kShadePathShift);
+    frame.chunks[0].triangles.push_back(t);
+  }
+  int step(uint32_t i) const { return Frame::segment_step_px(frame.chunks[0].triangles[i]); }
+  // The step from the kernel's own float planes of n / w (raster/planes.h make_plane).
+  int step_from_planes(uint32_t i) const {
+    const SetupTriangle& t = frame.chunks[0].triangles[i];
+    const Barycentrics b = barycentrics(t, triangle_edges(t));
+    SegmentStepInput in;
+    for (int v = 0; v < 3; ++v) in.n[v] = frame.attrs.n_view[t.attr[v]], in.inv_w[v] = t.inv_w[v];
+    for (int c = 0; c < 3; ++c)
+      in.n_over_w_dx[c] = make_plane(b, double(in.n[0][c]) * in.inv_w[0], double(in.n[1][c]) * in.inv_w[1],
+                                     double(in.n[2][c]) * in.inv_w[2]).gx;
+    in.material = &frame.shade.materials[0];
+    in.shade = &frame.shade;
+    return hybrid_triangle_step(in, frame.shade.hybrid_tolerance);
+  }
+};
+
+TEST(SegmentSteps, MatchTheKernelsPlanesAndFollowCurvature) {
+  StepFrame f;
+  f.add(64, {0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1});              // flat: longest segments
+  f.add(64, {0.4f, 0, 1}, {-0.4f, 0.3f, 1}, {0, -0.4f, 1});          // curved around H: per pixel
+  f.add(64, {1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f});  // gentle, far from H
+  f.add(8, {1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f});   // too narrow for segments
+  decide_segment_steps(f.frame, 0, 0, 4, SegmentSteps::All);
+  EXPECT_EQ(f.step(0), 16);
+  EXPECT_EQ(f.step(1), 1);
+  EXPECT_GT(f.step(2), 1);
+  EXPECT_EQ(f.step(3), 1) << "a triangle under kHybridMinWidthPx is drawn per pixel: no step";
+  for (uint32_t i = 0; i < 3; ++i) EXPECT_EQ(f.step(i), f.step_from_planes(i)) << "triangle " << i;
+}
+
+TEST(SegmentSteps, OnlyTheSpecularPathWhenAsked) {
+  StepFrame f;
+  f.add(64, {0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1}, ShadePath::GouraudDiffuse);
+  f.add(64, {0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1}, ShadePath::Specular);
+  decide_segment_steps(f.frame, 0, 0, 2, SegmentSteps::SpecularPath);
+  EXPECT_EQ(f.step(0), 1);
+  EXPECT_EQ(f.step(1), 16);
+  // Deciding again, or with None, keeps the record's other flags and a consistent step.
+  const uint16_t path_bits = f.frame.chunks[0].triangles[1].flags & kShadePathMask;
+  decide_segment_steps(f.frame, 0, 0, 2, SegmentSteps::SpecularPath);
+  decide_segment_steps(f.frame, 0, 0, 2, SegmentSteps::None);
+  EXPECT_EQ(f.step(1), 16);
+  EXPECT_EQ(f.frame.chunks[0].triangles[1].flags & kShadePathMask, path_bits);
+}
+
+// The kernel reads the front end's steps: with segments, hybrid interpolates between Phong
+// ends, so its image differs from phong's somewhere (and stays within the budget; a triangle
+// left at step 1 draws exactly as phong).
+TEST(SegmentSteps, ReachTheHybridKernel) {
+  // torus_local: a local viewer, whose steps also need the positions' gradient.
+  for (const char* file : {"default.json", "torus_local.json"}) {
+    const Scene scene = load_scene(std::filesystem::path(FASTSHADE_SOURCE_DIR) / "scenes" / file);
+    RenderOptions phong, hybrid;
+    phong.method = "phong";
+    hybrid.method = "hybrid";
+    const Image p = render(scene, phong), h = render(scene, hybrid);
+    ASSERT_EQ(p.rgb.size(), h.rgb.size());
+    int differ = 0, worst = 0;
+    for (std::size_t i = 0; i < p.rgb.size(); ++i) {
+      const int d = std::abs(int(p.rgb[i]) - int(h.rgb[i]));
+      differ += d > 0;
+      worst = std::max(worst, d);
+    }
+    EXPECT_GT(differ, 0) << file << ": hybrid drew every pixel as phong: the front end's steps did not arrive";
+    EXPECT_LE(worst, 3) << file;
+  }
+}
+
+}  // namespace
+}  // namespace fastshade
