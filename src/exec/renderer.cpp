@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "classify/segment_step.h"
 #include "exec/frame_profile.h"
 #include "exec/isa.h"
 #include "exec/left_out.h"
@@ -21,7 +22,6 @@
 #include "front/self_occlusion.h"
 #include "front/triangle_setup.h"
 #include "front/vertex_stage.h"
-#include "classify/segment_step.h"
 #include "shade/method.h"
 #include "shade/normal_blocks.h"
 
@@ -94,7 +94,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Triangles per task of the segment-length pass: about 50 us of work at 0.4 us a triangle,
+// Triangles per task of the segment-length pass: about 50-100 us of work at 0.2-0.4 us a triangle,
 // far above a task's cost, and 16 tasks for a chunk of 4096.
 constexpr uint32_t kStepBlock = 256;
 double ms_since(Clock::time_point t0) {
@@ -122,7 +122,6 @@ struct Renderer::Impl {
   AttrNeeds needs;
   TileDraw draw;
   bool classified = false;
-  SegmentSteps segment_steps = SegmentSteps::None;
   std::optional<Classifier> classifier;
   std::vector<MeshClosure> closures;  // per object, when hidden faces are skipped
   SelfOcclusionPlan occlusion;
@@ -147,7 +146,6 @@ struct Renderer::Impl {
     frame.shade.normals = parse_normals(o.normals, "--normals");
     needs = method->needs(frame.shade);
     draw = method->select(frame.shade, o);
-    segment_steps = method->segment_steps(o);
     // Without lights `auto` has nothing to classify (every colour is the ambient one).
     classified = method->classifies && !frame.shade.lights.empty();
     if (classified) {
@@ -166,6 +164,7 @@ struct Renderer::Impl {
     }
     setup.with_attrs = needs.normal || needs.color || needs.position;
     setup.sierpinski = o.gouraud == "sierpinski";
+    setup.segment_steps = method->segment_steps(o);
     const std::size_t chunks =
         (geometry.triangles.size() + limits::kTrianglesPerChunk - 1) / limits::kTrianglesPerChunk;
     frame.chunks.resize(chunks);
@@ -205,13 +204,13 @@ struct Renderer::Impl {
         count_chunk_bins(frame.grid, classified, frame.chunks[c]);
       });
       // Segment lengths after setup, in blocks across all chunks: the first chunks of a small
-      // mesh hold most of its triangles, and deciding a step costs about 0.4 us.
-      if (segment_steps != SegmentSteps::None)
+      // mesh hold most of its triangles, and deciding a step costs about 0.2-0.4 us.
+      if (setup.segment_steps != SegmentSteps::None)
         tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
-          const uint32_t count = static_cast<uint32_t>(frame.chunks[c].triangles.size());
+          const uint32_t count = static_cast<uint32_t>(frame.chunks[c].segment_pending.size());
           tbb::parallel_for(uint32_t(0), (count + kStepBlock - 1) / kStepBlock, [&](uint32_t block) {
             decide_segment_steps(frame, static_cast<uint32_t>(c), block * kStepBlock,
-                                 std::min(count, (block + 1) * kStepBlock), segment_steps);
+                                 std::min(count, (block + 1) * kStepBlock));
           });
         });
       t.front_end = ms_since(t0);

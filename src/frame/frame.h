@@ -75,6 +75,7 @@ struct Chunk {
   long long dropped = 0, culled = 0;
   long long hidden = 0;               // of culled: back faces their own mesh hides (front/self_occlusion.h)
   PathTally paths;                    // what the classifier decided for this chunk's triangles
+  std::vector<uint32_t> segment_pending;  // triangles whose hybrid segment length is still to decide
 };
 
 // Bin entries name a triangle as (chunk, index in chunk). Clipping one input triangle makes at

@@ -9,14 +9,17 @@
 
 namespace fastshade {
 
-void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last, SegmentSteps which) {
-  if (which == SegmentSteps::None) return;
+bool draws_segments(const SetupTriangle& t, SegmentSteps which) {
+  if (which == SegmentSteps::None || t.px_max[0] - t.px_min[0] + 1 < kHybridMinWidthPx) return false;
+  return which == SegmentSteps::All || Frame::path_of(t) == ShadePath::Specular;
+}
+
+void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last) {
   const ShadeConstants& k = frame.shade;
-  std::vector<SetupTriangle>& triangles = frame.chunks[chunk].triangles;
-  for (uint32_t i = first; i < last; ++i) {
-    SetupTriangle& t = triangles[i];
-    if (t.px_max[0] - t.px_min[0] + 1 < kHybridMinWidthPx) continue;
-    if (which == SegmentSteps::SpecularPath && Frame::path_of(t) != ShadePath::Specular) continue;
+  Chunk& c = frame.chunks[chunk];
+  for (uint32_t p = first; p < last; ++p) {
+    const uint32_t i = c.segment_pending[p];
+    SetupTriangle& t = c.triangles[i];
     const uint32_t entry = bin_entry(chunk, i);
     // The kernel's planes interpolate flip * n / w and p / w (shade/phong-inl.h
     // set_up_phong_planes); their x gradients, in double, from the barycentrics' exact ones.

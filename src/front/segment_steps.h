@@ -13,10 +13,16 @@ namespace fastshade {
 // specular path (`auto` with --spec-method hybrid).
 enum class SegmentSteps : uint8_t { None, All, SpecularPath };
 
-// Decides the segment length of triangles [first, last) of chunk `chunk` and writes it into
-// their flags (frame/frame.h kSegmentStepMask). Triangles narrower than kHybridMinWidthPx,
-// which the kernel draws per pixel, and triangles of other paths keep 0 (per-pixel Phong).
-// A pure function of the triangle: the same for any thread count or tile size.
-void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last, SegmentSteps which);
+// Whether the hybrid kernel draws this set-up triangle in segments: wide enough (narrower
+// ones are drawn per pixel, classify/segment_step.h kHybridMinWidthPx) and, for SpecularPath,
+// on the specular path. Setup lists such triangles in Chunk::segment_pending.
+bool draws_segments(const SetupTriangle& t, SegmentSteps which);
+
+// Decides the segment length of the triangles Chunk::segment_pending[first, last) of chunk
+// `chunk` (listed by setup: wide enough for segments and on a path that draws them) and
+// writes it into their flags (frame/frame.h kSegmentStepMask); every other triangle keeps 0
+// (per-pixel Phong). A pure function of the triangle: the same for any thread count or tile
+// size.
+void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last);
 
 }  // namespace fastshade

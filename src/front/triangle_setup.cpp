@@ -139,6 +139,8 @@ class ChunkBuilder {
     t.flags = back_facing ? kBackFacing : 0;
     if (p_.classifier)
       t.flags |= static_cast<uint16_t>(static_cast<int>(path(back_facing)) << kShadePathShift);
+    // Sierpinski parts are Gouraud's: a split frame draws no segments.
+    if (!p_.sierpinski && draws_segments(t, p_.segment_steps)) chunk_.segment_pending.push_back(static_cast<uint32_t>(chunk_.triangles.size()));
     chunk_.triangles.push_back(t);
     if (p_.sierpinski && std::max(box.x1 - box.x0, box.y1 - box.y0) + 1 >= limits::kSierpinskiMinPx)
       split_sierpinski();
@@ -245,6 +247,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
   chunk.clipped_count = 0;
   chunk.dropped = chunk.culled = chunk.hidden = 0;
   chunk.paths = {};
+  chunk.segment_pending.clear();
   ChunkBuilder builder(params, attrs, chunk, first);
   const uint8_t* flags = pv.flags.data();
   const ScreenVertex* screen = pv.screen.data();

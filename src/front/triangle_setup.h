@@ -8,6 +8,7 @@
 #include "fastshade/scene.h"
 #include "frame/frame.h"
 #include "front/scene_geometry.h"
+#include "front/segment_steps.h"
 #include "front/self_occlusion.h"
 #include "front/vertex_stage.h"
 
@@ -28,6 +29,9 @@ struct SetupParams {
   double classify_min_box_px = 0.0;
   // This frame's self-occlusion plan: kept back faces that it proves hidden are culled.
   const SelfOcclusionPlan* occlusion = nullptr;
+  // Which triangles draw hybrid segments: those wide enough for them are listed in
+  // Chunk::segment_pending, for decide_segment_steps() once setup is done.
+  SegmentSteps segment_steps = SegmentSteps::None;
 };
 
 // Triangles [first, last) of the scene into `chunk` (cleared first, capacity kept).

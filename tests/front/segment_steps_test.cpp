@@ -24,7 +24,8 @@ namespace {
 // One light along +z, so H = +z for the infinite viewer; n = 100, ks = 0.5.
 struct StepFrame {
   Frame frame;
-  StepFrame() {
+  SegmentSteps which;
+  explicit StepFrame(SegmentSteps which_triangles) : which(which_triangles) {
     frame.shade.lights.push_back({glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(1.0f)});
     const double n = 100;
     frame.shade.materials.push_back({glm::vec3(0.6f), glm::vec3(0.5f), float(n), n, make_brdf(BrdfChoice{}, n)});
@@ -49,8 +50,10 @@ struct StepFrame {
     t.px_min[0] = t.px_min[1] = 8;
     t.px_max[0] = t.px_max[1] = static_cast<int16_t>(8 + side_px - 1);
     t.flags = static_cast<uint16_t>(static_cast<int>(path) << kShadePathShift);
+    if (draws_segments(t, which)) frame.chunks[0].segment_pending.push_back(static_cast<uint32_t>(frame.chunks[0].triangles.size()));
     frame.chunks[0].triangles.push_back(t);
   }
+  void decide() { decide_segment_steps(frame, 0, 0, static_cast<uint32_t>(frame.chunks[0].segment_pending.size())); }
   int step(uint32_t i) const { return Frame::segment_step_px(frame.chunks[0].triangles[i]); }
   // The step from the kernel's own float planes of n / w (raster/planes.h make_plane).
   int step_from_planes(uint32_t i) const {
@@ -68,12 +71,13 @@ struct StepFrame {
 };
 
 TEST(SegmentSteps, MatchTheKernelsPlanesAndFollowCurvature) {
-  StepFrame f;
+  StepFrame f(SegmentSteps::All);
   f.add(64, {0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1});              // flat: longest segments
   f.add(64, {0.4f, 0, 1}, {-0.4f, 0.3f, 1}, {0, -0.4f, 1});          // curved around H: per pixel
   f.add(64, {1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f});  // gentle, far from H
   f.add(8, {1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f});   // too narrow for segments
-  decide_segment_steps(f.frame, 0, 0, 4, SegmentSteps::All);
+  EXPECT_EQ(f.frame.chunks[0].segment_pending.size(), 3u) << "the narrow one is not listed";
+  f.decide();
   EXPECT_EQ(f.step(0), 16);
   EXPECT_EQ(f.step(1), 1);
   EXPECT_GT(f.step(2), 1);
@@ -82,18 +86,15 @@ TEST(SegmentSteps, MatchTheKernelsPlanesAndFollowCurvature) {
 }
 
 TEST(SegmentSteps, OnlyTheSpecularPathWhenAsked) {
-  StepFrame f;
+  StepFrame f(SegmentSteps::SpecularPath);
   f.add(64, {0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1}, ShadePath::GouraudDiffuse);
   f.add(64, {0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1}, ShadePath::Specular);
-  decide_segment_steps(f.frame, 0, 0, 2, SegmentSteps::SpecularPath);
+  const uint16_t path_bits = f.frame.chunks[0].triangles[1].flags & kShadePathMask;
+  f.decide();
   EXPECT_EQ(f.step(0), 1);
   EXPECT_EQ(f.step(1), 16);
-  // Deciding again, or with None, keeps the record's other flags and a consistent step.
-  const uint16_t path_bits = f.frame.chunks[0].triangles[1].flags & kShadePathMask;
-  decide_segment_steps(f.frame, 0, 0, 2, SegmentSteps::SpecularPath);
-  decide_segment_steps(f.frame, 0, 0, 2, SegmentSteps::None);
-  EXPECT_EQ(f.step(1), 16);
-  EXPECT_EQ(f.frame.chunks[0].triangles[1].flags & kShadePathMask, path_bits);
+  EXPECT_EQ(f.frame.chunks[0].triangles[1].flags & kShadePathMask, path_bits) << "the path bits stay";
+  EXPECT_FALSE(draws_segments(f.frame.chunks[0].triangles[1], SegmentSteps::None));
 }
 
 // The kernel reads the front end's steps: with segments, hybrid interpolates between Phong

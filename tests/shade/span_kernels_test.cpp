@@ -383,7 +383,7 @@ TEST(HybridStep, FollowsCurvatureAndHighlights) {
   const Fixture f = random_triangle(rng);
   auto step_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) {
     SegmentStepInput in{{glm::normalize(n0), glm::normalize(n1), glm::normalize(n2)},
-                        {f.tri.inv_w[0], f.tri.inv_w[1], f.tri.inv_w[2]}};
+                        {f.tri.inv_w[0], f.tri.inv_w[1], f.tri.inv_w[2]}, {}};
     for (int v = 0; v < 3; ++v) in.n_over_w_dx += (dvec3(in.n[v]) * double(in.inv_w[v])) * f.bary.d_dx[v];
     in.material = &m;
     in.shade = &k;

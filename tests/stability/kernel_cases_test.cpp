@@ -340,7 +340,7 @@ TEST_F(StabilityKernels, NormalsTooShortToNormaliseShadeAsZero) {
 TEST(StabilityHybridStep, EqualNearlyEqualAndAntiparallelNormals) {
   const Lighting light(1000);
   auto step_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) {
-    SegmentStepInput in{{n0, n1, n2}, {1, 1, 1}};
+    SegmentStepInput in{{n0, n1, n2}, {1, 1, 1}, {}};
     SetupTriangle t{};
     const int32_t x[3] = {0, 64 * 256, 0}, y[3] = {0, 0, 64 * 256};
     for (int i = 0; i < 3; ++i) t.x_fx[i] = x[i], t.y_fx[i] = y[i];
