@@ -11,17 +11,12 @@
 #include <glm/geometric.hpp>
 
 #include "classify/classifier.h"
+#include "support/random_unit.h"
 
 namespace fastshade {
 namespace {
 
-dvec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  for (;;) {
-    const dvec3 v(g(rng), g(rng), g(rng));
-    if (glm::length(v) > 1e-3) return glm::normalize(v);
-  }
-}
+using test::random_unit;
 
 dvec3 rotate_towards(const dvec3& a, const dvec3& dir, double angle) {  // a turned by angle
   const dvec3 side = glm::normalize(dir - glm::dot(dir, a) * a);
@@ -71,32 +66,32 @@ struct Case {
 Case random_case(std::mt19937_64& rng, int kind) {
   std::uniform_real_distribution<double> u(0, 1);
   Case c;
-  const dvec3 a = random_unit(rng);
+  const dvec3 a = random_unit<dvec3>(rng);
   const double spread = std::pow(10.0, -4.0 * u(rng));  // 1e-4 .. 1 rad
   switch (kind % 6) {
     case 0:  // general
-      for (dvec3& n : c.n) n = random_unit(rng);
+      for (dvec3& n : c.n) n = random_unit<dvec3>(rng);
       break;
     case 1:  // a small cone: a dense mesh's triangle
-      for (dvec3& n : c.n) n = rotate_towards(a, random_unit(rng), spread * u(rng));
+      for (dvec3& n : c.n) n = rotate_towards(a, random_unit<dvec3>(rng), spread * u(rng));
       break;
     case 2:  // equal
       c.n[0] = c.n[1] = c.n[2] = a;
       break;
     case 3:  // nearly equal: 1e-6 apart
-      c.n[0] = a, c.n[1] = rotate_towards(a, random_unit(rng), 1e-6), c.n[2] = rotate_towards(a, random_unit(rng), 1e-6);
+      c.n[0] = a, c.n[1] = rotate_towards(a, random_unit<dvec3>(rng), 1e-6), c.n[2] = rotate_towards(a, random_unit<dvec3>(rng), 1e-6);
       break;
     case 4:  // antiparallel pair
-      c.n[0] = a, c.n[1] = -a, c.n[2] = random_unit(rng);
+      c.n[0] = a, c.n[1] = -a, c.n[2] = random_unit<dvec3>(rng);
       break;
     case 5:  // two equal, one apart
-      c.n[0] = c.n[1] = a, c.n[2] = rotate_towards(a, random_unit(rng), spread);
+      c.n[0] = c.n[1] = a, c.n[2] = rotate_towards(a, random_unit<dvec3>(rng), spread);
       break;
   }
   // H: near the normals (the hard part: highlights), anywhere, or perpendicular to all.
   const int h_kind = int(u(rng) * 3);
-  if (h_kind == 0) c.h = rotate_towards(c.n[0], random_unit(rng), 2.0 * spread * u(rng));
-  else if (h_kind == 1) c.h = random_unit(rng);
+  if (h_kind == 0) c.h = rotate_towards(c.n[0], random_unit<dvec3>(rng), 2.0 * spread * u(rng));
+  else if (h_kind == 1) c.h = random_unit<dvec3>(rng);
   else {
     const dvec3 perp = glm::cross(c.n[0], c.n[2]);  // perpendicular to n0 and n2 (and n1 if coplanar)
     c.h = glm::length(perp) > 1e-9 ? glm::normalize(perp) : glm::normalize(glm::cross(c.n[0], dvec3(0.3, 0.5, 0.8)));
@@ -165,15 +160,15 @@ TEST(Classifier, LocalViewerBoundCoversSampledH) {
     Case c = random_case(rng, i);
     ClassifyInput in;
     in.local_viewer = true;
-    const dvec3 centre = random_unit(rng) * (1.0 + 10.0 * u(rng));
+    const dvec3 centre = random_unit<dvec3>(rng) * (1.0 + 10.0 * u(rng));
     const double size = std::pow(10.0, -3.0 * u(rng));
     dvec3 pos[3];
     for (int v = 0; v < 3; ++v) {
       in.n[v] = c.n[v];
-      pos[v] = centre + size * random_unit(rng);
+      pos[v] = centre + size * random_unit<dvec3>(rng);
       in.v[v] = glm::normalize(-pos[v]);
     }
-    const dvec3 l = random_unit(rng);
+    const dvec3 l = random_unit<dvec3>(rng);
     const double bound = max_cos_nh(in, l, dvec3(0));
     const double sampled = sampled_max(in.n, [&](const dvec3& n, double l0, double l1) {
       const dvec3 p = l0 * pos[0] + l1 * pos[1] + (1 - l0 - l1) * pos[2];

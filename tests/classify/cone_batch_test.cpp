@@ -11,26 +11,21 @@
 
 #include "classify/classifier.h"
 #include "exec/isa.h"
+#include "support/random_unit.h"
 
 namespace fastshade {
 namespace {
 
-glm::vec3 random_unit(std::mt19937& rng) {
-  std::normal_distribution<float> g;
-  for (;;) {
-    const glm::vec3 v(g(rng), g(rng), g(rng));
-    if (glm::length(v) > 1e-3f) return glm::normalize(v);
-  }
-}
+using test::random_unit;
 
 // Vertex normals as a mesh has them (float): around a random axis, spread from flat to wide.
 std::vector<glm::vec3> random_triangles(std::mt19937& rng, int count) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   std::vector<glm::vec3> normals;
   for (int t = 0; t < count; ++t) {
-    const glm::vec3 axis = random_unit(rng);
+    const glm::vec3 axis = random_unit<glm::vec3>(rng);
     const float spread = std::pow(10.0f, -3.0f * u(rng));  // 1e-3 .. 1 rad
-    for (int v = 0; v < 3; ++v) normals.push_back(glm::normalize(axis + spread * random_unit(rng)));
+    for (int v = 0; v < 3; ++v) normals.push_back(glm::normalize(axis + spread * random_unit<glm::vec3>(rng)));
   }
   return normals;
 }
