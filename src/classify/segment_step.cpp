@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/limits.h"
+#include "frame/frame.h"
 
 namespace fastshade {
 
@@ -43,9 +44,9 @@ constexpr double kMinHalfVectorLength = 1e-3;
 
 }  // namespace
 
-int hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
+SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   constexpr int kBlock = limits::kSeedBlockPx;
-  if (!(tol > 0)) return 1;
+  if (!(tol > 0)) return {};
   // Along a row the interpolated q = n/w is affine, q(x) = q0 + g x, and the drawn normal is
   // u = q / |q|: u' = P_u g / |q| and u'' = -[u' (u.g) + u (u'.g) + u' (u.g)] / |q|, so
   // |u''| <= 3 |u'| |g| / |q|. Writing q = (sum beta_i / w_i) m with m = sum lambda_i n_i
@@ -55,7 +56,7 @@ int hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   // across a), |P_u g| <= |s| sin h + |r|.
   const dvec3 n_d[3] = {dvec3(tri.n[0]), dvec3(tri.n[1]), dvec3(tri.n[2])};
   const double q_min = std::min({tri.inv_w[0], tri.inv_w[1], tri.inv_w[2]}) * min_length_over_triangle(n_d);
-  if (!(q_min > 0.0)) return 1;
+  if (!(q_min > 0.0)) return {};
   const dvec3& g = tri.n_over_w_dx;
   double g_across = glm::length(g);
   if (const NormalCone cone(n_d); cone.cos_half > 0.0) {
@@ -81,9 +82,12 @@ int hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   const double kd = std::max({m.kd.r, m.kd.g, m.kd.b}), ks = std::max({m.ks.r, m.ks.g, m.ks.b});
   const double n = m.shininess_d;
   double bend = 0.0, slope = 0.0, kink = 0.0, h_turn = 0.0;  // weights of |u'|^2, |dC|, kinks
+  double split_kink = 0.0;  // the heaviest terminator kink of a light that can be split, not in `kink`
+  int split_light = -1;
   ViewMotion view;
   if (tri.shade->local_viewer) view = view_motion(tri);
-  for (const LightView& light : tri.shade->lights) {
+  for (int index = 0; index < int(tri.shade->lights.size()); ++index) {
+    const LightView& light = tri.shade->lights[index];
     const double weight = std::max({light.color.r, light.color.g, light.color.b});
     const dvec3 l(light.l_view);
     dvec3 h(light.h_view);
@@ -92,7 +96,7 @@ int hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
       // H = (L + V) / |L + V| moves by at most V's motion over |L + V|, smallest where L.V is.
       const double lv_min = -max_dot_over_triangle(view.v, -l);
       const double half_length = std::sqrt(std::max(0.0, 2.0 + 2.0 * lv_min));
-      if (!(half_length > kMinHalfVectorLength)) return 1;
+      if (!(half_length > kMinHalfVectorLength)) return {};
       h = glm::normalize(l + view.centre);
       h_spread = view.spread / half_length;
       h_turn = std::max(h_turn, view.turn_per_px / half_length);
@@ -120,15 +124,28 @@ int hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
       lo = std::min(lo, glm::dot(ni, l));
       hi = std::max(hi, glm::dot(ni, l));
     }
-    if (lo < 0.0 && hi > 0.0) kink += weight * kd * 0.25;
+    if (lo < 0.0 && hi > 0.0) {
+      double terminator = weight * kd * 0.25;
+      if (index <= kMaxSplitLight && terminator > split_kink) {
+        std::swap(terminator, split_kink);
+        split_light = index;
+      }
+      kink += terminator;
+    }
   }
   const double rel_turn = turn + h_turn;  // N against H, radians per pixel
-  if (!(rel_turn > 0.0)) return kBlock;
+  if (!(rel_turn > 0.0)) return {kBlock, -1};
   const double second = bend * rel_turn * rel_turn + slope * 3.0 * turn * stretch;  // |f''|
-  // A segment of L pixels errs by at most |f''| L^2 / 8 + kink * (its turn).
-  for (int step = kBlock; step >= 2; step /= 2)
-    if (second * step * step / 8.0 + kink * rel_turn * step <= tol) return step;
-  return 1;
+  // A segment of L pixels errs by at most |f''| L^2 / 8 + kinks * (its turn).
+  auto longest = [&](double kinks) {
+    for (int step = kBlock; step >= 2; step /= 2)
+      if (second * step * step / 8.0 + kinks * rel_turn * step <= tol) return step;
+    return 1;
+  };
+  const int charged = longest(kink + split_kink);
+  if (split_light >= 0)
+    if (const int split = longest(kink); split > charged) return {split, split_light};
+  return {charged, -1};
 }
 
 }  // namespace fastshade

@@ -30,7 +30,14 @@ struct SegmentStepInput {
   const ShadeConstants* shade = nullptr;
 };
 
-// The segment length (16, 8, 4, 2 or 1 px) for a whole triangle.
+// How hybrid draws a triangle: its segment length (16, 8, 4, 2 or 1 px) and the light, if
+// any, whose N.L it interpolates unclamped between the segment ends and clamps per pixel.
+struct SegmentPlan {
+  int step_px = 1;
+  int split_light = -1;  // -1: every light's diffuse term is interpolated clamped
+};
+
+// The segment plan for a whole triangle.
 //
 // A segment of L pixels errs, linearly interpolated, by at most L^2 / 8 * max |f''| along
 // the row, plus kd |u'| L / 4 where the terminator's kink crosses it. |f''| is bounded over
@@ -45,7 +52,12 @@ struct SegmentStepInput {
 // (NOTES.md: 19 LSB seen); this adapts to the triangle's curvature and to how near it is to a
 // highlight. A decision per 16-px block was measured first and cost more than the Phong
 // evaluations it saved on small triangles (3x phong's time on the 4K spot frame).
-int hybrid_triangle_step(const SegmentStepInput& in, float tol);
+// Where a light's terminator crosses the triangle, hybrid can instead interpolate that light's
+// N.L unclamped and clamp it per pixel: max(., 0) is 1-Lipschitz, so N.L's own interpolation
+// error (already in |f''|) bounds the result, and that light's kink term goes. It costs a
+// fourth interpolated channel, so the plan splits only the light whose kink weighs most, and
+// only where that makes the segments longer (docs/PERFORMANCE.md, session 21).
+SegmentPlan hybrid_triangle_step(const SegmentStepInput& in, float tol);
 
 // --max-error in LSB to the interpolation tolerance in colour units: half an LSB goes to the
 // final rounding, so that the rounded result stays within max_error of exact Phong.

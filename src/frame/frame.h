@@ -61,6 +61,11 @@ inline constexpr uint16_t kShadePathMask = 3 << kShadePathShift;
 // elsewhere.
 inline constexpr int kSegmentStepShift = 6;
 inline constexpr uint16_t kSegmentStepMask = 7 << kSegmentStepShift;
+// Bits 9-13: 1 + the light whose N.L hybrid interpolates unclamped and clamps per pixel (the
+// terminator's kink, classify/segment_step.h); 0 when no light's is. Five bits: lights 0-30.
+inline constexpr int kSplitLightShift = 9;
+inline constexpr uint16_t kSplitLightMask = 31 << kSplitLightShift;
+inline constexpr int kMaxSplitLight = 30;
 static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
 
 // One chunk of the front end's work: the triangles it set up (in draw order) and the vertex
@@ -113,6 +118,9 @@ struct Frame {
   }
   static int segment_step_px(const SetupTriangle& t) {
     return 1 << ((t.flags & kSegmentStepMask) >> kSegmentStepShift);
+  }
+  static int split_light(const SetupTriangle& t) {  // -1: none
+    return ((t.flags & kSplitLightMask) >> kSplitLightShift) - 1;
   }
   const SetupTriangle& triangle(uint32_t entry) const {
     return chunks[entry >> kBinIndexBits].triangles[entry & ((1u << kBinIndexBits) - 1)];

@@ -39,8 +39,10 @@ void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t
         in.pos_view[v] = glm::vec3(0.0f);
       }
     }
-    const int step = hybrid_triangle_step(in, k.hybrid_tolerance);
-    t.flags = static_cast<uint16_t>((t.flags & ~kSegmentStepMask) | (std::countr_zero(unsigned(step)) << kSegmentStepShift));
+    const SegmentPlan plan = hybrid_triangle_step(in, k.hybrid_tolerance);
+    t.flags = static_cast<uint16_t>((t.flags & ~(kSegmentStepMask | kSplitLightMask)) |
+                                    (std::countr_zero(unsigned(plan.step_px)) << kSegmentStepShift) |
+                                    ((plan.split_light + 1) << kSplitLightShift));
   }
 }
 

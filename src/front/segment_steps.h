@@ -19,10 +19,10 @@ enum class SegmentSteps : uint8_t { None, All, SpecularPath };
 // on the specular path. Setup lists such triangles in Chunk::segment_pending.
 bool draws_segments(const SetupTriangle& t, SegmentSteps which);
 
-// Decides the segment length of the triangles Chunk::segment_pending[first, last) of chunk
+// Decides the segment plan of the triangles Chunk::segment_pending[first, last) of chunk
 // `chunk` (listed by setup: wide enough for segments and on a path that draws them) and
-// writes it into their flags (frame/frame.h kSegmentStepMask); every other triangle keeps 0
-// (per-pixel Phong). A pure function of the triangle: the same for any thread count or tile
+// writes it into their flags (frame/frame.h kSegmentStepMask, kSplitLightMask); every other
+// triangle keeps 0 (per-pixel Phong). A pure function of the triangle: the same for any thread count or tile
 // size.
 void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last);
 

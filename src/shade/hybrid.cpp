@@ -30,15 +30,19 @@ namespace HWY_NAMESPACE {
 // step, and takes ca + t (cb - ca) with t = (x - ea) / (eb - ea) (0 if eb = ea): exactly what
 // hybrid_span_scalar() computes. The ends are clamped to the row's run in the whole triangle,
 // not this tile's part of it: Phong is only ever evaluated inside, and a pixel's value does
-// not depend on the tiles.
+// not depend on the tiles. With a split light (classify/segment_step.h), the ends carry that
+// light's N.L apart, interpolated alike and clamped per pixel: colour + kd colour_L max(N.L, 0).
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 class HybridRows {
  public:
-  // For one triangle: its planes (which must outlive the rows' flush) and segment length.
-  void start(const PhongSpanInput& in, int step) {
+  // For one triangle: its planes (which must outlive the rows' flush) and segment plan.
+  void start(const PhongSpanInput& in, int step, int split_light) {
     in_ = &in;
     step_ = step;
     shift_ = std::countr_zero(static_cast<unsigned>(step));
+    split_ = split_light;
+    if (split_ >= 0)
+      for (int c = 0; c < 3; ++c) split_kd_[c] = in.shade->lights[split_].color[c] * in.material->kd[c];
   }
 
   void add(int py, int xl, int xr, int x0, int x1, RowTarget target) {
@@ -67,12 +71,15 @@ class HybridRows {
       end_x_[j] = end_x_[ends_ - 1], end_dy_[j] = end_dy_[ends_ - 1];
     for (int j = 0; j < ends_; j += lanes) {
       const auto o = MakeLaneOffsets(d, in_->bary, hn::Load(di, end_x_ + j), hn::ConvertTo(d, hn::Load(di, end_dy_ + j)));
-      const auto c = PhongColor<kLocal, kBrdf>(d, *in_, o);
+      auto n_dot_l = hn::Zero(d);
+      const auto c = split_ >= 0 ? PhongColor<kLocal, kBrdf, true, true>(d, *in_, o, split_, &n_dot_l)
+                                 : PhongColor<kLocal, kBrdf>(d, *in_, o);
       hn::Store(c.r, d, end_c_[0] + j);
       hn::Store(c.g, d, end_c_[1] + j);
       hn::Store(c.b, d, end_c_[2] + j);
+      hn::Store(n_dot_l, d, end_c_[3] + j);
     }
-    for (int r = 0; r < rows_; ++r) interpolate(rows_at_[r]);
+    for (int r = 0; r < rows_; ++r) split_ >= 0 ? interpolate<true>(rows_at_[r]) : interpolate<false>(rows_at_[r]);
     rows_ = ends_ = 0;
   }
 
@@ -106,6 +113,7 @@ class HybridRows {
   // ends fit in one vector: lanes pick their segment's ends by permuting the vectors of end
   // colours loaded at the vector's first segment (and one further, for eb). Lanes past x1
   // (masked off) take x1's, so every pick is one of the row's segments.
+  template <bool kSplit>
   void interpolate(const Row& row) {
     ShadeSpan(in_->bary, in_->depth, row.py, row.x0, row.x1, RowTarget{row.depth, row.color, row.alpha_xor}, [&](auto d, const auto& o) {
       const hn::RebindToSigned<decltype(d)> di;
@@ -126,7 +134,13 @@ class HybridRows {
         const auto cb = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at + 1), pick);
         return hn::Add(ca, hn::Mul(t, hn::Sub(cb, ca)));
       };
-      return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
+      if constexpr (kSplit) {
+        const auto n_dot_l = hn::Max(channel(3), hn::Zero(d));
+        auto lit = [&](int c) { return hn::Add(channel(c), hn::Mul(hn::Set(d, split_kd_[c]), n_dot_l)); };
+        return PackRGBA<kSrgb>(d, lit(0), lit(1), lit(2));
+      } else {
+        return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
+      }
     });
   }
 
@@ -136,18 +150,19 @@ class HybridRows {
   // No member is initialised beyond these: the buffers are written before they are read, and
   // zeroing them (as std::optional's storage was) cost 12 KB of memset per triangle and tile.
   const PhongSpanInput* in_ = nullptr;
-  int step_ = 1, shift_ = 0;
+  int step_ = 1, shift_ = 0, split_ = -1;
+  float split_kd_[3];  // the split light's colour times kd, per channel
   int rows_ = 0, ends_ = 0;
   Row rows_at_[kMaxRows];
   alignas(64) int32_t end_x_[kMaxEnds + kPad], end_dy_[kMaxEnds + kPad];
-  alignas(64) float end_c_[3][kMaxEnds + kPad];
+  alignas(64) float end_c_[4][kMaxEnds + kPad];  // colour, and the split light's N.L
 };
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,
                     RowTarget row) {
   HybridRows<kLocal, kSrgb, kBrdf> rows;
-  rows.start(in, run.step);
+  rows.start(in, run.step, run.split_light);
   rows.add(py, run.xl, run.xr, x0, x1, row);
   rows.flush();
 }
@@ -157,7 +172,10 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   HybridRows<kLocal, kSrgb, kBrdf> rows;  // started once `in` is ready
   DrawByRowRuns<kLocal, kSrgb, kBrdf>(
       frame, entry, tt, kHybridMinWidthPx,
-      [&](const PhongSpanInput& in) { rows.start(in, Frame::segment_step_px(frame.triangle(entry))); },
+      [&](const PhongSpanInput& in) {
+        const SetupTriangle& t = frame.triangle(entry);
+        rows.start(in, Frame::segment_step_px(t), Frame::split_light(t));
+      },
       [&](const PhongSpanInput&, int xl, int xr, int py, int x0, int x1, RowTarget row) {
         rows.add(py, xl, xr, x0, x1, row);
       },

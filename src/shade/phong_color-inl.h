@@ -49,23 +49,26 @@ HWY_INLINE void AddLight(D d, const MaterialConstants& m, const LightView& light
 }
 
 // Blinn-Phong at the lanes' pixels before quantisation; phong_color_scalar() is its twin.
-// kSpecular = false: the diffuse-only colour (`auto`'s per-pixel diffuse path).
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, class D, class V = hn::Vec<D>>
+// kSpecular = false: the diffuse-only colour (`auto`'s per-pixel diffuse path). kSplit (hybrid's
+// split light, classify/segment_step.h): light split_light's diffuse term is left out and its
+// unclamped N.L written to *split_n_dot_l.
+template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, bool kSplit = false, class D, class V = hn::Vec<D>>
 HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
-                                             const LaneOffsets<D>& o);
+                                             const LaneOffsets<D>& o, int split_light = -1,
+                                             V* split_n_dot_l = nullptr);
 
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, class D>
-HWY_INLINE ColorVecs<D> PhongColor(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
-  using V = hn::Vec<D>;
+template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, bool kSplit = false, class D, class V = hn::Vec<D>>
+HWY_INLINE ColorVecs<D> PhongColor(D d, const PhongSpanInput& in, const LaneOffsets<D>& o, int split_light = -1,
+                                   V* split_n_dot_l = nullptr) {
   V nx = EvalPlane(d, in.n[0], o), ny = EvalPlane(d, in.n[1], o), nz = EvalPlane(d, in.n[2], o);
   Normalize(d, nx, ny, nz);
-  return PhongColorFromNormal<kLocal, kBrdf, kSpecular>(d, in, nx, ny, nz, o);
+  return PhongColorFromNormal<kLocal, kBrdf, kSpecular, kSplit>(d, in, nx, ny, nz, o, split_light, split_n_dot_l);
 }
 
 // Blinn-Phong for unit normals in lanes; phong_color_from_normal_scalar() is its twin.
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular, class D, class V>
+template <bool kLocal, BrdfKind kBrdf, bool kSpecular, bool kSplit, class D, class V>
 HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
-                                             const LaneOffsets<D>& o) {
+                                             const LaneOffsets<D>& o, int split_light, V* split_n_dot_l) {
   const MaterialConstants& m = *in.material;
   const ShadeConstants& k = *in.shade;
   V vx, vy, vz;  // toward the eye (local viewer only)
@@ -77,10 +80,18 @@ HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx
     Normalize(d, vx, vy, vz);
   }
   ColorVecs<D> acc{hn::Set(d, k.ambient.r), hn::Set(d, k.ambient.g), hn::Set(d, k.ambient.b)};
-  for (const LightView& light : k.lights) {
+  for (int index = 0; index < static_cast<int>(k.lights.size()); ++index) {
+    const LightView& light = k.lights[index];
     const V lx = hn::Set(d, light.l_view.x), ly = hn::Set(d, light.l_view.y),
             lz = hn::Set(d, light.l_view.z);
-    const V diffuse = hn::Max(Dot3<D>(nx, ny, nz, lx, ly, lz), hn::Zero(d));
+    const V n_dot_l = Dot3<D>(nx, ny, nz, lx, ly, lz);
+    V diffuse = hn::Max(n_dot_l, hn::Zero(d));
+    if constexpr (kSplit) {
+      if (index == split_light) {
+        *split_n_dot_l = n_dot_l;
+        diffuse = hn::Zero(d);
+      }
+    }
     V specular = hn::Zero(d);
     if constexpr (kSpecular) {
       V hx, hy, hz;

@@ -57,16 +57,19 @@ namespace {
 
 // The interpolated normal (n/w, any length) normalised as the kernels' Normalize does, then lit.
 PhongColor phong_color_from_plane_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
-                                                const PixelOffsets& o) {
+                                                const PixelOffsets& o, int split_light = -1,
+                                                float* split_n_dot_l = nullptr) {
   const float len2 = (nx * nx + ny * ny) + nz * nz;
   const float inv_len = len2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(len2) : 0.0f;
-  return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o);
+  return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o, split_light, split_n_dot_l);
 }
 
 }  // namespace
 
-PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o) {
-  return phong_color_from_plane_normal_scalar(in, plane_at(in.n[0], o), plane_at(in.n[1], o), plane_at(in.n[2], o), o);
+PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o, int split_light,
+                              float* split_n_dot_l) {
+  return phong_color_from_plane_normal_scalar(in, plane_at(in.n[0], o), plane_at(in.n[1], o), plane_at(in.n[2], o), o,
+                                              split_light, split_n_dot_l);
 }
 
 void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
@@ -85,7 +88,7 @@ void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
 }
 
 PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
-                                          const PixelOffsets& o) {
+                                          const PixelOffsets& o, int split_light, float* split_n_dot_l) {
   const MaterialConstants& m = *in.material;
   const ShadeConstants& k = *in.shade;
   float vx = 0, vy = 0, vz = 0;  // toward the eye (local viewer)
@@ -97,7 +100,8 @@ PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, fl
     vx *= inv, vy *= inv, vz *= inv;
   }
   PhongColor rgb{{k.ambient.r, k.ambient.g, k.ambient.b}};
-  for (const LightView& light : k.lights) {
+  for (int index = 0; index < int(k.lights.size()); ++index) {
+    const LightView& light = k.lights[index];
     float hx = light.h_view.x, hy = light.h_view.y, hz = light.h_view.z;
     if (k.local_viewer) {
       hx = light.l_view.x + vx, hy = light.l_view.y + vy, hz = light.l_view.z + vz;
@@ -107,7 +111,11 @@ PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, fl
     }
     const float ndl = (nx * light.l_view.x + ny * light.l_view.y) + nz * light.l_view.z;
     const float ndh = (nx * hx + ny * hy) + nz * hz;
-    const float diffuse = std::max(ndl, 0.0f);
+    float diffuse = std::max(ndl, 0.0f);
+    if (index == split_light) {
+      *split_n_dot_l = ndl;
+      diffuse = 0.0f;
+    }
     const float specular = eval_brdf_one(m.lobe, ndh);
     for (int c = 0; c < 3; ++c)
       rgb.c[c] = rgb.c[c] + light.color[c] * (m.kd[c] * diffuse + m.ks[c] * specular);
@@ -155,10 +163,16 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
     } else {
       const int g = px & ~(step - 1);
       const int ea = std::clamp(g, run.xl, run.xr), eb = std::clamp(g + step, run.xl, run.xr);
-      const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py));
-      const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py));
+      float da = 0.0f, db = 0.0f;  // the split light's N.L at the ends
+      const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py), run.split_light, &da);
+      const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py), run.split_light, &db);
       const float t = eb > ea ? static_cast<float>(px - ea) / static_cast<float>(eb - ea) : 0.0f;
       for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = ca.c[ch] + t * (cb.c[ch] - ca.c[ch]);
+      if (run.split_light >= 0) {
+        const float n_dot_l = std::max(da + t * (db - da), 0.0f);
+        const LightView& light = in.shade->lights[run.split_light];
+        for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = rgb.c[ch] + (light.color[ch] * in.material->kd[ch]) * n_dot_l;
+      }
     }
     row.color[px] = pack_rgba(quantize_like_simd(rgb.c[0], srgb), quantize_like_simd(rgb.c[1], srgb),
                               quantize_like_simd(rgb.c[2], srgb));

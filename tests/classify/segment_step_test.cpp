@@ -1,8 +1,9 @@
 // hybrid_triangle_step() against brute force: on random triangles, every row's segments as the
 // hybrid kernel lays them (ends at multiples of the step, clamped to the row's covered run),
-// interpolating exact colours at their ends, stay within the tolerance of the exact colour at
-// every covered pixel. All in double, with the drawn normal u = q / |q| of the perspective-
-// correct q = sum b_i n_i / w_i: the derivation's claim itself, free of float rounding.
+// interpolating exact colours at their ends (a split light's N.L apart, clamped after), stay
+// within the tolerance of the exact colour at every covered pixel. All in double, with the
+// drawn normal u = q / |q| of the perspective-correct q = sum b_i n_i / w_i: the derivation's
+// claim itself, free of float rounding.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,17 +26,30 @@ struct Scene {
 };
 
 // Blinn-Phong as the kernels evaluate it (BRDF `exact`), in double: every light's diffuse and
-// specular terms, each colour channel's largest weight (what the bound sums).
-double colour(const Scene& s, const dvec3& u) {
-  double sum = 0.0;
-  for (const LightView& light : s.shade.lights) {
+// specular terms, each colour channel's largest weight (what the bound sums). The split light's
+// diffuse term is kept apart, as the kernel interpolates it: `rest` and its unclamped N.L.
+struct Colour {
+  double rest = 0.0, n_dot_l = 0.0, kd_weight = 0.0;
+  double value() const { return rest + kd_weight * std::max(n_dot_l, 0.0); }
+};
+
+Colour colour(const Scene& s, const dvec3& u, int split_light) {
+  Colour c;
+  for (int index = 0; index < int(s.shade.lights.size()); ++index) {
+    const LightView& light = s.shade.lights[index];
     const double weight = std::max({light.color.r, light.color.g, light.color.b});
     const double kd = s.material.kd.r, ks = s.material.ks.r;
-    const double nl = std::max(0.0, glm::dot(u, dvec3(light.l_view)));
+    const double nl = glm::dot(u, dvec3(light.l_view));
     const double nh = std::max(0.0, glm::dot(u, dvec3(light.h_view)));
-    sum += weight * (kd * nl + ks * std::pow(nh, s.material.shininess_d));
+    if (index == split_light) {
+      c.n_dot_l = nl;
+      c.kd_weight = weight * kd;
+      c.rest += weight * ks * std::pow(nh, s.material.shininess_d);
+    } else {
+      c.rest += weight * (kd * std::max(nl, 0.0) + ks * std::pow(nh, s.material.shininess_d));
+    }
   }
-  return sum;
+  return c;
 }
 
 TEST(SegmentStep, RandomTrianglesStayWithinTheToleranceAtEveryPixel) {
@@ -43,7 +57,7 @@ TEST(SegmentStep, RandomTrianglesStayWithinTheToleranceAtEveryPixel) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   const double shininess[] = {1.0, 1.5, 2.0, 3.0, 10.0, 37.5, 100.0, 1000.0, 1e4};
   const float tol = hybrid_tolerance(1.0);
-  int long_segments = 0, pixels_checked = 0;
+  int long_segments = 0, split = 0, pixels_checked = 0;
   double worst = 0.0;  // the largest error over the tolerance
   for (int trial = 0; trial < 1500; ++trial) {
     Scene s;
@@ -92,15 +106,17 @@ TEST(SegmentStep, RandomTrianglesStayWithinTheToleranceAtEveryPixel) {
     for (int v = 0; v < 3; ++v) in.n_over_w_dx += e[v].x * inv_w[v] * n_d[v];
     in.material = &s.material;
     in.shade = &s.shade;
-    const int step = hybrid_triangle_step(in, tol);
+    const SegmentPlan plan = hybrid_triangle_step(in, tol);
+    const int step = plan.step_px;
     if (step == 1) continue;
     ++long_segments;
+    split += plan.split_light >= 0;
     auto inside = [&](double x, double y) {
       for (int v = 0; v < 3; ++v)
         if (e[v].x * x + e[v].y * y + e[v].z < 0.0) return false;
       return true;
     };
-    auto exact = [&](int x, int y) { return colour(s, glm::normalize(q_at(x + 0.5, y + 0.5))); };
+    auto exact = [&](int x, int y) { return colour(s, glm::normalize(q_at(x + 0.5, y + 0.5)), plan.split_light); };
     for (int y = 0; y < int(size) + 1; ++y) {
       int xl = 1 << 30, xr = -1;
       for (int x = 0; x < int(size) + 1; ++x)
@@ -109,8 +125,9 @@ TEST(SegmentStep, RandomTrianglesStayWithinTheToleranceAtEveryPixel) {
         const int g = x & ~(step - 1);
         const int ea = std::clamp(g, xl, xr), eb = std::clamp(g + step, xl, xr);
         const double t = eb > ea ? double(x - ea) / double(eb - ea) : 0.0;
-        const double ca = exact(ea, y), cb = exact(eb, y);
-        const double err = std::abs(ca + t * (cb - ca) - exact(x, y));
+        const Colour ca = exact(ea, y), cb = exact(eb, y);
+        const Colour drawn{ca.rest + t * (cb.rest - ca.rest), ca.n_dot_l + t * (cb.n_dot_l - ca.n_dot_l), ca.kd_weight};
+        const double err = std::abs(drawn.value() - exact(x, y).value());
         worst = std::max(worst, err / tol);
         ++pixels_checked;
         ASSERT_LE(err, tol * (1.0 + 1e-9)) << "trial " << trial << " n " << n << " step " << step << " pixel (" << x
@@ -120,9 +137,10 @@ TEST(SegmentStep, RandomTrianglesStayWithinTheToleranceAtEveryPixel) {
   }
   // The test is only worth something if it tries long segments, often.
   EXPECT_GT(long_segments, 300);
+  EXPECT_GT(split, 30);
   EXPECT_GT(pixels_checked, 1000000);
-  std::printf("%d triangles with segments of 2+ px, %d pixels; worst error %.3f of the tolerance\n", long_segments,
-              pixels_checked, worst);
+  std::printf("%d triangles with segments of 2+ px (%d with a split light), %d pixels; worst error %.3f of the tolerance\n",
+              long_segments, split, pixels_checked, worst);
 }
 
 }  // namespace

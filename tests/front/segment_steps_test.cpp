@@ -55,8 +55,9 @@ struct StepFrame {
   }
   void decide() { decide_segment_steps(frame, 0, 0, static_cast<uint32_t>(frame.chunks[0].segment_pending.size())); }
   int step(uint32_t i) const { return Frame::segment_step_px(frame.chunks[0].triangles[i]); }
-  // The step from the kernel's own float planes of n / w (raster/planes.h make_plane).
-  int step_from_planes(uint32_t i) const {
+  int split_light(uint32_t i) const { return Frame::split_light(frame.chunks[0].triangles[i]); }
+  // The plan from the kernel's own float planes of n / w (raster/planes.h make_plane).
+  SegmentPlan plan_from_planes(uint32_t i) const {
     const SetupTriangle& t = frame.chunks[0].triangles[i];
     const Barycentrics b = barycentrics(t, triangle_edges(t));
     SegmentStepInput in;
@@ -76,13 +77,20 @@ TEST(SegmentSteps, MatchTheKernelsPlanesAndFollowCurvature) {
   f.add(64, {0.4f, 0, 1}, {-0.4f, 0.3f, 1}, {0, -0.4f, 1});          // curved around H: per pixel
   f.add(64, {1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f});  // gentle, far from H
   f.add(8, {1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f});   // too narrow for segments
-  EXPECT_EQ(f.frame.chunks[0].segment_pending.size(), 3u) << "the narrow one is not listed";
+  f.add(64, {1, 0, 0.1f}, {1, 0.03f, -0.1f}, {1, -0.03f, 0.05f});  // gentle, across the terminator
+  EXPECT_EQ(f.frame.chunks[0].segment_pending.size(), 4u) << "the narrow one is not listed";
   f.decide();
   EXPECT_EQ(f.step(0), 16);
   EXPECT_EQ(f.step(1), 1);
   EXPECT_GT(f.step(2), 1);
   EXPECT_EQ(f.step(3), 1) << "a triangle under kHybridMinWidthPx is drawn per pixel: no step";
-  for (uint32_t i = 0; i < 3; ++i) EXPECT_EQ(f.step(i), f.step_from_planes(i)) << "triangle " << i;
+  EXPECT_EQ(f.split_light(4), 0) << "the light whose terminator crosses is split";
+  for (uint32_t i : {0u, 1u, 2u, 4u}) {
+    const SegmentPlan plan = f.plan_from_planes(i);
+    EXPECT_EQ(f.step(i), plan.step_px) << "triangle " << i;
+    EXPECT_EQ(f.split_light(i), plan.split_light) << "triangle " << i;
+  }
+  EXPECT_EQ(f.split_light(3), -1);
 }
 
 TEST(SegmentSteps, OnlyTheSpecularPathWhenAsked) {

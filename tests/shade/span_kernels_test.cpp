@@ -176,16 +176,26 @@ struct OneLight {
 TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
   std::mt19937 rng(13);
   const OneLight scene;
+  int terminator_rows = 0;  // split rows whose N.L changes sign: the per-pixel clamp is exercised
   for (const std::string& isa : available_isas()) {
     select_isa(isa);
-    for (int step : {1, 2, 4, 8, 16}) {
-      const PhongSpanInput in = scene.random_input(rng, -0.5f, 0.5f);
-      const HybridRun run{step, 145, 190};  // the row's run starts and ends off the blocks
-      expect_same("hybrid " + isa + " step " + std::to_string(step), rng, 1,
-                  [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
-                  [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
-    }
+    for (int split_light : {-1, 0})
+      for (int step : {1, 2, 4, 8, 16}) {
+        // A split light's rows reach past its terminator (normals' z down to -0.6).
+        const PhongSpanInput in = scene.random_input(rng, -0.5f, split_light < 0 ? 0.5f : -0.6f);
+        const HybridRun run{step, 145, 190, split_light};  // the row's run starts and ends off the blocks
+        if (split_light >= 0) {
+          float nl_a = 0, nl_b = 0;
+          phong_color_scalar(in, pixel_offsets(in.bary, run.xl, 100), split_light, &nl_a);
+          phong_color_scalar(in, pixel_offsets(in.bary, run.xr, 100), split_light, &nl_b);
+          terminator_rows += (nl_a < 0) != (nl_b < 0);
+        }
+        expect_same("hybrid " + isa + " step " + std::to_string(step) + " split " + std::to_string(split_light), rng, 1,
+                    [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
+                    [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
+      }
   }
+  EXPECT_GT(terminator_rows, 0);
 }
 
 TEST_F(SpanKernels, NormalsPathsMatchScalarReferenceOnEveryIsa) {
@@ -374,21 +384,30 @@ TEST(NormalBlocks, WeightsReproduceSlerpAndNormalisedLerp) {
   }
 }
 
-TEST(HybridStep, FollowsCurvatureAndHighlights) {
+// One light along +z (so H = +z for the infinite viewer), n = 100, on a random triangle: the
+// segment plan for given vertex normals.
+struct StepCase {
   ShadeConstants k;
-  k.lights.push_back({glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(1.0f)});
-  const double n = 100;
-  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), float(n), n, make_brdf(BrdfChoice{}, n)};
-  std::mt19937 rng(3);
-  const Fixture f = random_triangle(rng);
-  auto step_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) {
+  MaterialConstants m{glm::vec3(0.6f), glm::vec3(0.5f), 100.0f, 100.0, make_brdf(BrdfChoice{}, 100.0)};
+  Fixture f;
+  explicit StepCase(unsigned seed) {
+    k.lights.push_back({glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(1.0f)});
+    std::mt19937 rng(seed);
+    f = random_triangle(rng);
+  }
+  SegmentPlan plan(glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) const {
     SegmentStepInput in{{glm::normalize(n0), glm::normalize(n1), glm::normalize(n2)},
                         {f.tri.inv_w[0], f.tri.inv_w[1], f.tri.inv_w[2]}, {}};
     for (int v = 0; v < 3; ++v) in.n_over_w_dx += (dvec3(in.n[v]) * double(in.inv_w[v])) * f.bary.d_dx[v];
     in.material = &m;
     in.shade = &k;
     return hybrid_triangle_step(in, hybrid_tolerance(1.0));
-  };
+  }
+};
+
+TEST(HybridStep, FollowsCurvatureAndHighlights) {
+  const StepCase c(3);
+  auto step_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) { return c.plan(n0, n1, n2).step_px; };
   // Equal normals: nothing to interpolate wrongly, the longest segments.
   EXPECT_EQ(step_for({0.3f, 0, 1}, {0.3f, 0, 1}, {0.3f, 0, 1}), 16);
   // Curved and facing the highlight (H = +z inside the normals' cone): per-pixel Phong.
@@ -400,9 +419,24 @@ TEST(HybridStep, FollowsCurvatureAndHighlights) {
   EXPECT_GT(step_for({1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f}), 1);
   // No budget: always per pixel.
   SegmentStepInput in;
-  in.material = &m;
-  in.shade = &k;
-  EXPECT_EQ(hybrid_triangle_step(in, 0.0f), 1);
+  in.material = &c.m;
+  in.shade = &c.k;
+  EXPECT_EQ(hybrid_triangle_step(in, 0.0f).step_px, 1);
+}
+
+TEST(HybridStep, SplitsTheTerminatorsLightOnlyWhereItLengthensSegments) {
+  const StepCase c(4);
+  auto plan_for = [&](glm::vec3 n0, glm::vec3 n1, glm::vec3 n2) { return c.plan(n0, n1, n2); };
+  // Gently curved across the terminator (N.L = z changes sign), far from H = +z: the kink
+  // alone shortens the segments, and splitting the light lengthens them.
+  const SegmentPlan across = plan_for({1, 0, 0.02f}, {1, 0.01f, -0.02f}, {1, -0.01f, 0.01f});
+  EXPECT_EQ(across.split_light, 0);
+  EXPECT_GT(across.step_px, 1);
+  // The same curvature wholly on the lit side: no kink, nothing to split.
+  const SegmentPlan lit = plan_for({1, 0, 0.52f}, {1, 0.01f, 0.48f}, {1, -0.01f, 0.51f});
+  EXPECT_EQ(lit.split_light, -1);
+  // Equal normals: no kink, nothing to split.
+  EXPECT_EQ(plan_for({1, 0, 0.3f}, {1, 0, 0.3f}, {1, 0, 0.3f}).split_light, -1);
 }
 
 }  // namespace

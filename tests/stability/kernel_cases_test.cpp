@@ -349,7 +349,7 @@ TEST(StabilityHybridStep, EqualNearlyEqualAndAntiparallelNormals) {
     for (int v = 0; v < 3; ++v) in.n_over_w_dx += dvec3(in.n[v]) * b.d_dx[v];
     in.material = &light.m;
     in.shade = &light.k;
-    return hybrid_triangle_step(in, hybrid_tolerance(1.0));
+    return hybrid_triangle_step(in, hybrid_tolerance(1.0)).step_px;
   };
   const glm::vec3 h(light.h());
   const glm::vec3 e = glm::normalize(glm::cross(h, glm::vec3(0, 1, 0)));
