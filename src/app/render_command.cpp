@@ -17,6 +17,12 @@ namespace {
 nlohmann::json stats_json(const RenderStats& s) {
   nlohmann::json paths = nlohmann::json::object();
   for (const PathStats& p : s.paths) paths[p.name] = {{"triangles", p.triangles}, {"pixels", p.pixels}};
+  nlohmann::json segments = nlohmann::json::object();
+  if (!s.segment_triangles.empty()) {  // arrays, in order of length (an object's keys sort as text)
+    nlohmann::json lengths = nlohmann::json::array();
+    for (std::size_t m = 0; m < s.segment_triangles.size(); ++m) lengths.push_back(1 << m);
+    segments = {{"length_px", lengths}, {"triangles", s.segment_triangles}, {"split_light", s.segment_split}};
+  }
   return {{"triangles_in", s.triangles_in},
           {"triangles_drawn", s.triangles_drawn},
           {"triangles_dropped", s.triangles_dropped},
@@ -39,6 +45,7 @@ nlohmann::json stats_json(const RenderStats& s) {
           {"mtri_per_s", s.mtri_per_s()},
           {"paths", paths},
           {"triangles_unclassified", s.triangles_unclassified},
+          {"hybrid_segments", segments},
           {"left_out", s.left_out}};
 }
 
@@ -51,6 +58,11 @@ void print_explanation(const RenderStats& s, const RenderOptions& o) {
     std::printf("  %-16s %9lld triangles (%5.1f %%) %10lld visible pixels (%5.1f %%)\n", p.name.c_str(),
                 p.triangles, tris ? 100.0 * p.triangles / tris : 0.0, p.pixels,
                 pixels ? 100.0 * p.pixels / pixels : 0.0);
+  if (!s.segment_triangles.empty()) {
+    std::printf("  hybrid segments (triangles wide enough for them, by length):");
+    for (std::size_t m = 0; m < s.segment_triangles.size(); ++m) std::printf(" %d px %lld,", 1 << m, s.segment_triangles[m]);
+    std::printf(" %lld of them interpolate a light's N.L unclamped across its terminator\n", s.segment_split);
+  }
   if (!s.left_out.empty()) std::printf("left out:\n");
   for (const std::string& line : s.left_out) std::printf("  - %s\n", line.c_str());
 }

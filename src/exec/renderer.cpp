@@ -248,6 +248,13 @@ struct Renderer::Impl {
     }
     stats.paths.clear();
     stats.triangles_unclassified = tally.unclassified;
+    stats.segment_triangles.clear();
+    stats.segment_split = 0;
+    if (setup.segment_steps != SegmentSteps::None) {
+      SegmentTally segments = tally_segment_plans(frame);
+      stats.segment_triangles = std::move(segments.by_log2_px);
+      stats.segment_split = segments.split;
+    }
     if (classified)
       for (int p = 1; p < kShadePathCount; ++p)
         stats.paths.push_back({kShadePathNames[p], tally.triangles[p], back_end.path_pixels[p]});

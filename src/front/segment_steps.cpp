@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "classify/segment_step.h"
+#include "core/limits.h"
 #include "frame/edge_function.h"
 #include "raster/planes.h"
 
@@ -44,6 +45,18 @@ void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t
                                     (std::countr_zero(unsigned(plan.step_px)) << kSegmentStepShift) |
                                     ((plan.split_light + 1) << kSplitLightShift));
   }
+}
+
+SegmentTally tally_segment_plans(const Frame& frame) {
+  SegmentTally tally;
+  tally.by_log2_px.assign(std::countr_zero(unsigned(limits::kSeedBlockPx)) + 1, 0);
+  for (const Chunk& c : frame.chunks)
+    for (const uint32_t i : c.segment_pending) {
+      const SetupTriangle& t = c.triangles[i];
+      ++tally.by_log2_px[std::countr_zero(unsigned(Frame::segment_step_px(t)))];
+      tally.split += Frame::split_light(t) >= 0;
+    }
+  return tally;
 }
 
 }  // namespace fastshade

@@ -5,6 +5,7 @@
 // docs/PERFORMANCE.md, session 18).
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include "frame/frame.h"
 
@@ -25,5 +26,13 @@ bool draws_segments(const SetupTriangle& t, SegmentSteps which);
 // triangle keeps 0 (per-pixel Phong). A pure function of the triangle: the same for any thread count or tile
 // size.
 void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last);
+
+// What the decisions came to, for the stats: triangles by log2 of their segment length, and
+// how many split a light.
+struct SegmentTally {
+  std::vector<long long> by_log2_px;
+  long long split = 0;
+};
+SegmentTally tally_segment_plans(const Frame& frame);
 
 }  // namespace fastshade

@@ -33,6 +33,19 @@ TEST_F(Cli, DefaultSceneRendersWithStats) {
   EXPECT_EQ(listing(), (std::set<std::string>{"default.png", "stats.json"}));
 }
 
+TEST_F(Cli, HybridStatsCountSegmentPlans) {
+  const fs::path out = dir_ / "hybrid.png", stats = dir_ / "stats.json";
+  const Outcome r = run("render -o " + out.string() + " --method hybrid --stats " + stats.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto segments = nlohmann::json::parse(slurp(stats))["hybrid_segments"];
+  EXPECT_EQ(segments["length_px"], nlohmann::json({1, 2, 4, 8, 16}));
+  ASSERT_EQ(segments["triangles"].size(), 5u);
+  long long listed = 0;
+  for (const auto& count : segments["triangles"]) listed += count.get<long long>();
+  EXPECT_GT(listed, 0);
+  EXPECT_LE(segments["split_light"].get<long long>(), listed);
+}
+
 TEST_F(Cli, CompareReportsIdenticalImages) {
   const fs::path out = dir_ / "a.png";
   ASSERT_EQ(run("render -o " + out.string()).exit_code, 0);

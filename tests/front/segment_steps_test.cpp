@@ -128,5 +128,30 @@ TEST(SegmentSteps, ReachTheHybridKernel) {
   }
 }
 
+// The stats count the plans: every triangle listed for segments once, by its length; none
+// where the frame draws no segments.
+TEST(SegmentSteps, TalliedInTheStats) {
+  const Scene scene = load_scene(std::filesystem::path(FASTSHADE_SOURCE_DIR) / "scenes" / "default.json");
+  auto stats_for = [&](const char* method) {
+    RenderOptions o;
+    o.method = method;
+    Renderer r(scene, o);
+    r.render_frame();
+    return r.last_stats();
+  };
+  const RenderStats hybrid = stats_for("hybrid"), phong = stats_for("phong");
+  ASSERT_EQ(hybrid.segment_triangles.size(), 5u) << "1, 2, 4, 8 and 16 px";
+  long long listed = 0, segmented = 0;
+  for (std::size_t m = 0; m < hybrid.segment_triangles.size(); ++m) {
+    listed += hybrid.segment_triangles[m];
+    if (m > 0) segmented += hybrid.segment_triangles[m];
+  }
+  EXPECT_GT(segmented, 0);
+  EXPECT_LE(listed, hybrid.triangles_drawn);
+  EXPECT_LE(hybrid.segment_split, segmented) << "only triangles with segments split a light";
+  EXPECT_TRUE(phong.segment_triangles.empty());
+  EXPECT_EQ(phong.segment_split, 0);
+}
+
 }  // namespace
 }  // namespace fastshade
