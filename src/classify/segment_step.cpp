@@ -48,23 +48,27 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   constexpr int kBlock = limits::kSeedBlockPx;
   if (!(tol > 0)) return {};
   // Along a row the interpolated q = n/w is affine, q(x) = q0 + g x, and the drawn normal is
-  // u = q / |q|: u' = P_u g / |q| and u'' = -[u' (u.g) + u (u'.g) + u' (u.g)] / |q|, so
-  // |u''| <= 3 |u'| |g| / |q|. Writing q = (sum beta_i / w_i) m with m = sum lambda_i n_i
-  // (lambda: perspective-correct barycentrics), |q| >= min_i(1 / w_i) min |m|, a bound for
-  // the whole triangle that holds at folds of antiparallel normals too, where q shrinks. Only
-  // g's part across u turns u: with g = s a + r (a the normals' cone axis, half-angle h, r
-  // across a), |P_u g| <= |s| sin h + |r|.
+  // u = q / |q|: u' = P_u g / |q| and u'' = -[2 u' (u.g) + u (u'.g)] / |q|. As u' is across u
+  // and u'.g = |P_u g|^2 / |q| = |u'|^2 |q|, |u''| = |u'| sqrt(4 (u.g / |q|)^2 + |u'|^2): the
+  // normal's turn, and the rate |q| changes at. Writing q = (sum beta_i / w_i) m with
+  // m = sum lambda_i n_i (lambda: perspective-correct barycentrics), |q| >= min_i(1 / w_i)
+  // min |m|, a bound for the whole triangle that holds at folds of antiparallel normals too,
+  // where q shrinks. With g = s a + r (a the normals' cone axis, half-angle h, r across a) and
+  // u inside the cone, g's part across u is |P_u g| <= |s| sin h + |r|, and its part along u
+  // |u.g| <= |s| + |r| sin h (session 21: the old |u''| <= 3 |u'| |g| / |q| took |g| for both).
   const dvec3 n_d[3] = {dvec3(tri.n[0]), dvec3(tri.n[1]), dvec3(tri.n[2])};
   const double q_min = std::min({tri.inv_w[0], tri.inv_w[1], tri.inv_w[2]}) * min_length_over_triangle(n_d);
   if (!(q_min > 0.0)) return {};
   const dvec3& g = tri.n_over_w_dx;
-  double g_across = glm::length(g);
+  double g_across = glm::length(g), g_along = g_across;
   if (const NormalCone cone(n_d); cone.cos_half > 0.0) {
-    const double s_axis = glm::dot(g, cone.axis);
-    g_across = std::min(g_across, std::abs(s_axis) * cone.sin_half + glm::length(g - s_axis * cone.axis));
+    const double s_axis = glm::dot(g, cone.axis), r_length = glm::length(g - s_axis * cone.axis);
+    g_across = std::min(g_across, std::abs(s_axis) * cone.sin_half + r_length);
+    g_along = std::min(g_along, std::abs(s_axis) + r_length * cone.sin_half);
   }
-  const double turn = g_across / q_min;          // |u'|, radians per pixel, at most
-  const double stretch = glm::length(g) / q_min;  // |g| / |q|, at most
+  const double turn = g_across / q_min;    // |u'|, radians per pixel, at most
+  const double shrink = g_along / q_min;   // |u.g| / |q|, per pixel, at most
+  const double rate_change = turn * std::sqrt(4.0 * shrink * shrink + turn * turn);  // |u''|, at most
   // The colour's second derivative along x: f = C(u), f'' = u'^T (d2C) u' + dC . u''.
   // Diffuse kd max(u.L, 0): |dC| <= kd, d2C = 0, plus a kink where the terminator crosses,
   // which linear interpolation misses by at most kd a / 4 for a segment turning by a (first
@@ -135,7 +139,7 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   }
   const double rel_turn = turn + h_turn;  // N against H, radians per pixel
   if (!(rel_turn > 0.0)) return {kBlock, -1};
-  const double second = bend * rel_turn * rel_turn + slope * 3.0 * turn * stretch;  // |f''|
+  const double second = bend * rel_turn * rel_turn + slope * rate_change;  // |f''|
   // A segment of L pixels errs by at most |f''| L^2 / 8 + kinks * (its turn).
   auto longest = [&](double kinks) {
     for (int step = kBlock; step >= 2; step /= 2)
