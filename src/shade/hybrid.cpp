@@ -27,8 +27,8 @@ namespace HWY_NAMESPACE {
 //
 // A pixel x of a row whose whole run in the triangle is [xl, xr] lies in the segment from
 // ea = clamp(g, xl, xr) to eb = clamp(g + step, xl, xr), g = x rounded down to a multiple of
-// step, and takes ca + t (cb - ca) with t = (x - ea) / (eb - ea) (0 if eb = ea): exactly what
-// hybrid_span_scalar() computes. The ends are clamped to the row's run in the whole triangle,
+// step, and takes ca + (x - ea) s with the slope s = (cb - ca) / (eb - ea) (0 if eb = ea):
+// exactly what hybrid_span_scalar() computes. The ends are clamped to the row's run in the whole triangle,
 // not this tile's part of it: Phong is only ever evaluated inside, and a pixel's value does
 // not depend on the tiles. With a split light (classify/segment_step.h), the ends carry that
 // light's N.L apart, interpolated alike and clamped per pixel: colour + kd colour_L max(N.L, 0).
@@ -67,7 +67,7 @@ class HybridRows {
     const hn::ScalableTag<float> d;
     const hn::RebindToSigned<decltype(d)> di;
     const int lanes = static_cast<int>(hn::Lanes(d));
-    for (int j = ends_; j < ends_ + lanes; ++j)  // padding: the last end repeated
+    for (int j = ends_; j <= ends_ + lanes; ++j)  // padding: the last end repeated
       end_x_[j] = end_x_[ends_ - 1], end_dy_[j] = end_dy_[ends_ - 1];
     for (int j = 0; j < ends_; j += lanes) {
       const auto o = MakeLaneOffsets(d, in_->bary, hn::Load(di, end_x_ + j), hn::ConvertTo(d, hn::Load(di, end_dy_ + j)));
@@ -78,6 +78,21 @@ class HybridRows {
       hn::Store(c.g, d, end_c_[1] + j);
       hn::Store(c.b, d, end_c_[2] + j);
       hn::Store(n_dot_l, d, end_c_[3] + j);
+    }
+    // Each end's segment to the next as a slope per pixel, once per end instead of a division
+    // per pixel. The slopes of a row's last end (to the next row's first, or to the padding)
+    // are never picked; the end past the last vector is zeroed so they stay finite.
+    const int channels = split_ >= 0 ? 4 : 3;
+    const int computed = (ends_ + lanes - 1) / lanes * lanes;
+    for (int c = 0; c < channels; ++c) end_c_[c][computed] = 0.0f;
+    for (int j = 0; j < ends_; j += lanes) {
+      const auto len = hn::ConvertTo(d, hn::Sub(hn::LoadU(di, end_x_ + j + 1), hn::Load(di, end_x_ + j)));
+      const auto has_len = hn::Gt(len, hn::Zero(d));
+      const auto inv_len = hn::Max(len, hn::Set(d, 1.0f));
+      for (int c = 0; c < channels; ++c) {
+        const auto rise = hn::Sub(hn::LoadU(d, end_c_[c] + j + 1), hn::Load(d, end_c_[c] + j));
+        hn::Store(hn::IfThenElseZero(has_len, hn::Div(rise, inv_len)), d, end_slope_[c] + j);
+      }
     }
     for (int r = 0; r < rows_; ++r) split_ >= 0 ? interpolate<true>(rows_at_[r]) : interpolate<false>(rows_at_[r]);
     rows_ = ends_ = 0;
@@ -110,9 +125,9 @@ class HybridRows {
   }
 
   // A vector of `lanes` pixels meets at most lanes / step + 1 segments (step >= 2), whose
-  // ends fit in one vector: lanes pick their segment's ends by permuting the vectors of end
-  // colours loaded at the vector's first segment (and one further, for eb). Lanes past x1
-  // (masked off) take x1's, so every pick is one of the row's segments.
+  // start colours and slopes fit in one vector each: lanes pick their segment's by permuting
+  // the vectors loaded at the vector's first segment. Lanes past x1 (masked off) take x1's,
+  // so every pick is one of the row's segments.
   template <bool kSplit>
   void interpolate(const Row& row) {
     ShadeSpan(in_->bary, in_->depth, row.py, row.x0, row.x1, RowTarget{row.depth, row.color, row.alpha_xor}, [&](auto d, const auto& o) {
@@ -123,16 +138,11 @@ class HybridRows {
       const int first_seg = hn::GetLane(seg);
       const int at = row.first_end + first_seg - (row.x0 >> shift_);
       const auto pick = hn::IndicesFromVec(d, hn::Sub(seg, hn::Set(di, first_seg)));
-      const auto g = hn::ShiftLeftSame(seg, shift_);
-      const auto xl = hn::Set(di, row.xl), xr = hn::Set(di, row.xr);
-      const auto ea = hn::Min(hn::Max(g, xl), xr);
-      const auto len = hn::ConvertTo(d, hn::Sub(hn::Min(hn::Max(hn::Add(g, hn::Set(di, step_)), xl), xr), ea));
-      const auto t = hn::IfThenElseZero(hn::Gt(len, hn::Zero(d)),
-                                        hn::Div(hn::ConvertTo(d, hn::Sub(xi, ea)), hn::Max(len, hn::Set(d, 1.0f))));
+      const auto ea = hn::Min(hn::Max(hn::ShiftLeftSame(seg, shift_), hn::Set(di, row.xl)), hn::Set(di, row.xr));
+      const auto dx = hn::ConvertTo(d, hn::Sub(xi, ea));
       auto channel = [&](int c) {
         const auto ca = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at), pick);
-        const auto cb = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at + 1), pick);
-        return hn::Add(ca, hn::Mul(t, hn::Sub(cb, ca)));
+        return hn::Add(ca, hn::Mul(dx, hn::TableLookupLanes(hn::LoadU(d, end_slope_[c] + at), pick)));
       };
       if constexpr (kSplit) {
         const auto n_dot_l = hn::Max(channel(3), hn::Zero(d));
@@ -156,6 +166,7 @@ class HybridRows {
   Row rows_at_[kMaxRows];
   alignas(64) int32_t end_x_[kMaxEnds + kPad], end_dy_[kMaxEnds + kPad];
   alignas(64) float end_c_[4][kMaxEnds + kPad];  // colour, and the split light's N.L
+  alignas(64) float end_slope_[4][kMaxEnds + kPad];  // their change per pixel to the next end
 };
 
 template <bool kLocal, bool kSrgb, BrdfKind kBrdf>

@@ -166,10 +166,12 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
       float da = 0.0f, db = 0.0f;  // the split light's N.L at the ends
       const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py), run.split_light, &da);
       const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py), run.split_light, &db);
-      const float t = eb > ea ? static_cast<float>(px - ea) / static_cast<float>(eb - ea) : 0.0f;
-      for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = ca.c[ch] + t * (cb.c[ch] - ca.c[ch]);
+      // The slope per pixel, then the offset from ea: the SIMD kernel's operations in order.
+      const float len = static_cast<float>(eb - ea), dx = static_cast<float>(px - ea);
+      auto along = [&](float a, float b) { return a + dx * (eb > ea ? (b - a) / len : 0.0f); };
+      for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = along(ca.c[ch], cb.c[ch]);
       if (run.split_light >= 0) {
-        const float n_dot_l = std::max(da + t * (db - da), 0.0f);
+        const float n_dot_l = std::max(along(da, db), 0.0f);
         const LightView& light = in.shade->lights[run.split_light];
         for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = rgb.c[ch] + (light.color[ch] * in.material->kd[ch]) * n_dot_l;
       }
