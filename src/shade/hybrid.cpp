@@ -130,12 +130,15 @@ class HybridRows {
   // so every pick is one of the row's segments.
   template <bool kSplit>
   void interpolate(const Row& row) {
-    ShadeSpan(in_->bary, in_->depth, row.py, row.x0, row.x1, RowTarget{row.depth, row.color, row.alpha_xor}, [&](auto d, const auto& o) {
+    const RowTarget target{row.depth, row.color, row.alpha_xor};
+    // The vector's first pixel x comes in a register: the lanes' pixels and the first lane's
+    // segment need no conversion from the offsets and no extract, which fed the loads' address.
+    WithNarrowestVector(row.x1 - row.x0 + 1, [&](auto dv) {
+    ShadeSpanAt(dv, in_->bary, in_->depth, row.py, row.x0, row.x1, target, [&](auto d, const auto&, int x) {
       const hn::RebindToSigned<decltype(d)> di;
-      const auto xi = hn::Min(hn::Add(hn::ConvertTo(di, hn::Add(o.block_dx, o.k)), hn::Set(di, in_->bary.ax)),
-                              hn::Set(di, row.x1));
+      const auto xi = hn::Min(hn::Add(hn::Iota(di, 0), hn::Set(di, x)), hn::Set(di, row.x1));
       const auto seg = hn::ShiftRightSame(xi, shift_);
-      const int first_seg = hn::GetLane(seg);
+      const int first_seg = x >> shift_;
       const int at = row.first_end + first_seg - (row.x0 >> shift_);
       const auto pick = hn::IndicesFromVec(d, hn::Sub(seg, hn::Set(di, first_seg)));
       const auto ea = hn::Min(hn::Max(hn::ShiftLeftSame(seg, shift_), hn::Set(di, row.xl)), hn::Set(di, row.xr));
@@ -151,6 +154,7 @@ class HybridRows {
       } else {
         return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
       }
+    });
     });
   }
 
