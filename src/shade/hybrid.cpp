@@ -88,10 +88,10 @@ class HybridRows {
     for (int j = 0; j < ends_; j += lanes) {
       const auto len = hn::ConvertTo(d, hn::Sub(hn::LoadU(di, end_x_ + j + 1), hn::Load(di, end_x_ + j)));
       const auto has_len = hn::Gt(len, hn::Zero(d));
-      const auto inv_len = hn::Max(len, hn::Set(d, 1.0f));
+      const auto divisor = hn::Max(len, hn::Set(d, 1.0f));  // len where it counts
       for (int c = 0; c < channels; ++c) {
         const auto rise = hn::Sub(hn::LoadU(d, end_c_[c] + j + 1), hn::Load(d, end_c_[c] + j));
-        hn::Store(hn::IfThenElseZero(has_len, hn::Div(rise, inv_len)), d, end_slope_[c] + j);
+        hn::Store(hn::IfThenElseZero(has_len, hn::Div(rise, divisor)), d, end_slope_[c] + j);
       }
     }
     for (int r = 0; r < rows_; ++r) split_ >= 0 ? interpolate<true>(rows_at_[r]) : interpolate<false>(rows_at_[r]);
@@ -134,27 +134,27 @@ class HybridRows {
     // The vector's first pixel x comes in a register: the lanes' pixels and the first lane's
     // segment need no conversion from the offsets and no extract, which fed the loads' address.
     WithNarrowestVector(row.x1 - row.x0 + 1, [&](auto dv) {
-    ShadeSpanAt(dv, in_->bary, in_->depth, row.py, row.x0, row.x1, target, [&](auto d, const auto&, int x) {
-      const hn::RebindToSigned<decltype(d)> di;
-      const auto xi = hn::Min(hn::Add(hn::Iota(di, 0), hn::Set(di, x)), hn::Set(di, row.x1));
-      const auto seg = hn::ShiftRightSame(xi, shift_);
-      const int first_seg = x >> shift_;
-      const int at = row.first_end + first_seg - (row.x0 >> shift_);
-      const auto pick = hn::IndicesFromVec(d, hn::Sub(seg, hn::Set(di, first_seg)));
-      const auto ea = hn::Min(hn::Max(hn::ShiftLeftSame(seg, shift_), hn::Set(di, row.xl)), hn::Set(di, row.xr));
-      const auto dx = hn::ConvertTo(d, hn::Sub(xi, ea));
-      auto channel = [&](int c) {
-        const auto ca = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at), pick);
-        return hn::Add(ca, hn::Mul(dx, hn::TableLookupLanes(hn::LoadU(d, end_slope_[c] + at), pick)));
-      };
-      if constexpr (kSplit) {
-        const auto n_dot_l = hn::Max(channel(3), hn::Zero(d));
-        auto lit = [&](int c) { return hn::Add(channel(c), hn::Mul(hn::Set(d, split_kd_[c]), n_dot_l)); };
-        return PackRGBA<kSrgb>(d, lit(0), lit(1), lit(2));
-      } else {
-        return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
-      }
-    });
+      ShadeSpanAt(dv, in_->bary, in_->depth, row.py, row.x0, row.x1, target, [&](auto d, const auto&, int x) {
+        const hn::RebindToSigned<decltype(d)> di;
+        const auto xi = hn::Min(hn::Add(hn::Iota(di, 0), hn::Set(di, x)), hn::Set(di, row.x1));
+        const auto seg = hn::ShiftRightSame(xi, shift_);
+        const int first_seg = x >> shift_;
+        const int at = row.first_end + first_seg - (row.x0 >> shift_);
+        const auto pick = hn::IndicesFromVec(d, hn::Sub(seg, hn::Set(di, first_seg)));
+        const auto ea = hn::Min(hn::Max(hn::ShiftLeftSame(seg, shift_), hn::Set(di, row.xl)), hn::Set(di, row.xr));
+        const auto dx = hn::ConvertTo(d, hn::Sub(xi, ea));
+        auto channel = [&](int c) {
+          const auto ca = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at), pick);
+          return hn::Add(ca, hn::Mul(dx, hn::TableLookupLanes(hn::LoadU(d, end_slope_[c] + at), pick)));
+        };
+        if constexpr (kSplit) {
+          const auto n_dot_l = hn::Max(channel(3), hn::Zero(d));
+          auto lit = [&](int c) { return hn::Add(channel(c), hn::Mul(hn::Set(d, split_kd_[c]), n_dot_l)); };
+          return PackRGBA<kSrgb>(d, lit(0), lit(1), lit(2));
+        } else {
+          return PackRGBA<kSrgb>(d, channel(0), channel(1), channel(2));
+        }
+      });
     });
   }
 
