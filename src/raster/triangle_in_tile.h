@@ -12,7 +12,7 @@ namespace fastshade {
 
 struct TriangleInTile {
   const SetupTriangle* tri;
-  TriangleEdges edges;  // coverage: the triangle or its Sierpinski part
+  TriangleEdges edges;  // coverage of row spans: the triangle or its Sierpinski part
   PixelRect rect;  // bounding box ∩ tile
   // Barycentric gradients and the depth plane exist only once a span is found: a small
   // triangle's box often holds pixel centres it does not cover.
@@ -20,9 +20,12 @@ struct TriangleInTile {
   Plane depth;
   bool has_planes = false;
 
+  // The planes span the whole triangle (a Sierpinski part's parent), from edges computed
+  // afresh rather than read from `edges`: the packed and box kernels keep their coverage edges
+  // in registers, and a vector load of edges just stored as scalars stalls (no forwarding).
   FASTSHADE_FORCE_INLINE void set_up_planes() {
     if (has_planes) return;
-    set_barycentrics(*tri, sierpinski_part(*tri) ? shape_edges(*tri) : edges, bary);
+    set_barycentrics(*tri, shape_edges(*tri), bary);
     depth = make_plane(bary, tri->depth[0], tri->depth[1], tri->depth[2]);
     has_planes = true;
   }

@@ -311,8 +311,7 @@ HWY_INLINE void ShadeBox(D d, TriangleInTile& tri, const TileTarget& tt, BoxLayo
   const SetupTriangle& t = *tri.tri;
   const auto nearer = hn::RebindMask(di, hn::Gt(tile_z, hn::Set(d, std::min({t.depth[0], t.depth[1], t.depth[2]}))));
   if (hn::AllFalse(di, hn::And(box.inside, nearer))) return;
-  tri.edges = triangle_edges(t);
-  const auto covered = BoxCovered(di, tri.edges, r, box);
+  const auto covered = BoxCovered(di, triangle_edges(t), r, box);
   if (hn::AllFalse(di, hn::And(covered, nearer))) return;
   const size_t count = hn::CountTrue(di, covered);
   alignas(64) int32_t lane_px[kMaxLanes], lane_py[kMaxLanes], lane_at[kMaxLanes];
@@ -329,7 +328,7 @@ HWY_INLINE void ShadeBox(D d, TriangleInTile& tri, const TileTarget& tt, BoxLayo
 template <typename ShadeFn>
 HWY_INLINE void ShadePacked(TriangleInTile& tri, const TileTarget& tt, ShadeFn&& shade) {
   uint32_t row_bits[limits::kMaxTilePx];
-  const int covered = RowMasks(tri.edges, tri.rect, row_bits);
+  const int covered = RowMasks(triangle_edges(*tri.tri), tri.rect, row_bits);
   if (covered == 0) return;
   WithNarrowestVector(covered, [&](auto d) { ShadePackedWith(d, tri, tt, row_bits, shade); });
 }
@@ -346,7 +345,6 @@ HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn
       return;
     }
     if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt)) return;
-    tri.edges = triangle_edges(*tri.tri);
     ShadePacked(tri, tt, shade);
     return;
   }
