@@ -52,12 +52,14 @@ class HybridRows {
       return;
     }
     if (RowHidden(py, x0, x1, target)) return;
-    const int g0 = x0 & ~(step_ - 1), g_last = (x1 & ~(step_ - 1)) + step_;
+    // Segments start at the row's first covered pixel xl (every tile finds the same ends),
+    // not at multiples of the step: a row as short as a segment then has two ends, not three.
+    const int g0 = xl + ((x0 - xl) & ~(step_ - 1)), g_last = xl + ((x1 - xl) & ~(step_ - 1)) + step_;
     const int count = (g_last - g0) / step_ + 1;
     if (ends_ + count > kMaxEnds || rows_ == kMaxRows) flush();
     rows_at_[rows_++] = {py, xl, xr, x0, x1, ends_, target.depth, target.color, target.alpha_xor};
     for (int g = g0; g <= g_last; g += step_, ++ends_) {
-      end_x_[ends_] = std::clamp(g, xl, xr);
+      end_x_[ends_] = std::min(g, xr);
       end_dy_[ends_] = py - in_->bary.ay;
     }
   }
@@ -136,13 +138,14 @@ class HybridRows {
     WithNarrowestVector(row.x1 - row.x0 + 1, [&](auto dv) {
       ShadeSpanAt(dv, in_->bary, in_->depth, row.py, row.x0, row.x1, target, [&](auto d, const auto&, int x) {
         const hn::RebindToSigned<decltype(d)> di;
-        const auto xi = hn::Min(hn::Add(hn::Iota(di, 0), hn::Set(di, x)), hn::Set(di, row.x1));
-        const auto seg = hn::ShiftRightSame(xi, shift_);
-        const int first_seg = x >> shift_;
-        const int at = row.first_end + first_seg - (row.x0 >> shift_);
+        // Pixels relative to the row's first, where its segments start (add() above).
+        const auto from_xl = hn::Sub(hn::Min(hn::Add(hn::Iota(di, 0), hn::Set(di, x)), hn::Set(di, row.x1)),
+                                     hn::Set(di, row.xl));
+        const auto seg = hn::ShiftRightSame(from_xl, shift_);
+        const int first_seg = (x - row.xl) >> shift_;
+        const int at = row.first_end + first_seg - ((row.x0 - row.xl) >> shift_);
         const auto pick = hn::IndicesFromVec(d, hn::Sub(seg, hn::Set(di, first_seg)));
-        const auto ea = hn::Min(hn::Max(hn::ShiftLeftSame(seg, shift_), hn::Set(di, row.xl)), hn::Set(di, row.xr));
-        const auto dx = hn::ConvertTo(d, hn::Sub(xi, ea));
+        const auto dx = hn::ConvertTo(d, hn::And(from_xl, hn::Set(di, step_ - 1)));  // x - its segment's start
         auto channel = [&](int c) {
           const auto ca = hn::TableLookupLanes(hn::LoadU(d, end_c_[c] + at), pick);
           return hn::Add(ca, hn::Mul(dx, hn::TableLookupLanes(hn::LoadU(d, end_slope_[c] + at), pick)));

@@ -161,8 +161,7 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
     if (step == 1) {
       rgb = phong_color_scalar(in, o);
     } else {
-      const int g = px & ~(step - 1);
-      const int ea = std::clamp(g, run.xl, run.xr), eb = std::clamp(g + step, run.xl, run.xr);
+      const int ea = run.xl + ((px - run.xl) & ~(step - 1)), eb = std::min(ea + step, run.xr);
       float da = 0.0f, db = 0.0f;  // the split light's N.L at the ends
       const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py), run.split_light, &da);
       const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py), run.split_light, &db);
