@@ -76,9 +76,12 @@ struct RenderStats {
   long long triangles_unclassified = 0;  // of paths' specular: sent there unclassified (--classify-min-px)
   // Frames that draw hybrid segments: of the triangles wide enough for them, how many take
   // segments of 2^m px (index m; 1 px is per-pixel Phong), and how many of those interpolate
-  // a light's N.L unclamped (the terminator's split light). Empty and 0 otherwise.
+  // a light's N.L unclamped (the terminator's split light), and how many of 2+ px light their
+  // ends without the specular term (bounded below 2^-24 on the whole triangle). Empty and 0
+  // otherwise.
   std::vector<long long> segment_triangles;
   long long segment_split = 0;
+  long long segment_no_specular = 0;
   std::vector<std::string> left_out;   // what the frame skipped because the scene needs none of it
   StageTimes median;  // median over timed frames
   int frames = 0;

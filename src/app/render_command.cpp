@@ -21,7 +21,10 @@ nlohmann::json stats_json(const RenderStats& s) {
   if (!s.segment_triangles.empty()) {  // arrays, in order of length (an object's keys sort as text)
     nlohmann::json lengths = nlohmann::json::array();
     for (std::size_t m = 0; m < s.segment_triangles.size(); ++m) lengths.push_back(1 << m);
-    segments = {{"length_px", lengths}, {"triangles", s.segment_triangles}, {"split_light", s.segment_split}};
+    segments = {{"length_px", lengths},
+                {"triangles", s.segment_triangles},
+                {"split_light", s.segment_split},
+                {"no_specular", s.segment_no_specular}};
   }
   return {{"triangles_in", s.triangles_in},
           {"triangles_drawn", s.triangles_drawn},

@@ -86,6 +86,7 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   const double kd = std::max({m.kd.r, m.kd.g, m.kd.b}), ks = std::max({m.ks.r, m.ks.g, m.ks.b});
   const double n = m.shininess_d;
   double bend = 0.0, slope = 0.0, kink = 0.0, h_turn = 0.0;  // weights of |u'|^2, |dC|, kinks
+  double specular_max = 0.0;  // the largest sum of the lights' ks c^n anywhere on the triangle
   double split_kink = 0.0;  // the heaviest terminator kink of a light that can be split, not in `kink`
   int split_light = -1;
   ViewMotion view;
@@ -110,9 +111,11 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
     const double c_max = h_spread > 0.0 ? std::cos(std::max(0.0, std::acos(c_centre) - h_spread)) : c_centre;
     if (ks > 0.0 && c_max > 0.0) {
       if (n < 2.0) {
+        specular_max += weight * ks * std::pow(c_max, n);
         kink += weight * ks * 0.5;
       } else {
         const double c_pow = std::pow(c_max, n - 2.0);
+        specular_max += weight * ks * c_pow * c_max * c_max;
         double lobe_bend = c_pow;  // the largest c^(n-2), times 1 - c^2 with H fixed, over c <= c_max
         if (!tri.shade->local_viewer) {
           const double c_bend = std::min(c_max, std::sqrt((n - 2.0) / n));
@@ -137,19 +140,22 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
       kink += terminator;
     }
   }
+  // Left out, the specular terms err by specular_max at most, which the segments' budget pays.
+  const bool specular = !(specular_max < kNegligibleSpecular);
+  const double budget = specular ? tol : tol - specular_max;
   const double rel_turn = turn + h_turn;  // N against H, radians per pixel
-  if (!(rel_turn > 0.0)) return {kBlock, -1};
+  if (!(rel_turn > 0.0)) return {kBlock, -1, specular};
   const double second = bend * rel_turn * rel_turn + slope * rate_change;  // |f''|
   // A segment of L pixels errs by at most |f''| L^2 / 8 + kinks * (its turn).
   auto longest = [&](double kinks) {
     for (int step = kBlock; step >= 2; step /= 2)
-      if (second * step * step / 8.0 + kinks * rel_turn * step <= tol) return step;
+      if (second * step * step / 8.0 + kinks * rel_turn * step <= budget) return step;
     return 1;
   };
   const int charged = longest(kink + split_kink);
   if (split_light >= 0)
-    if (const int split = longest(kink); split > charged) return {split, split_light};
-  return {charged, -1};
+    if (const int split = longest(kink); split > charged) return {split, split_light, specular};
+  return {charged, -1, specular};
 }
 
 }  // namespace fastshade

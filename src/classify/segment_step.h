@@ -30,11 +30,21 @@ struct SegmentStepInput {
   const ShadeConstants* shade = nullptr;
 };
 
-// How hybrid draws a triangle: its segment length (16, 8, 4, 2 or 1 px) and the light, if
-// any, whose N.L it interpolates unclamped between the segment ends and clamps per pixel.
+// A triangle whose specular terms, bounded at c_max and summed over lights as the step bound
+// sums them, stay below this has its segment ends lit without them. 2^-24 is 1/65536 of an
+// 8-bit step: a level can change only where the colour sits that close to a rounding boundary,
+// and the bound charges the term to the tolerance, so the error proof holds as it did. At n = 100
+// and ks = 0.5 it leaves out every triangle whose N.H stays below 0.85 (32 degrees from H): on
+// the 4K spot frame, most of them (docs/PERFORMANCE.md, session 27).
+inline constexpr double kNegligibleSpecular = 0x1p-24;
+
+// How hybrid draws a triangle: its segment length (16, 8, 4, 2 or 1 px), the light, if any,
+// whose N.L it interpolates unclamped between the segment ends and clamps per pixel, and
+// whether its ends need the specular term at all.
 struct SegmentPlan {
   int step_px = 1;
   int split_light = -1;  // -1: every light's diffuse term is interpolated clamped
+  bool specular = true;  // false: every light's ks c^n < kNegligibleSpecular on the triangle
 };
 
 // The segment plan for a whole triangle.
@@ -48,7 +58,8 @@ struct SegmentPlan {
 // (derivation in segment_step.cpp; docs/CLASSIFIER.md says what the earlier estimate missed).
 // A local viewer's H moves too: by the view direction's spread over the triangle and its turn
 // along x (docs/STABILITY.md, "B2").
-// The longest L whose bound is within tol wins. One fixed length per object fails badly
+// The longest L whose bound is within tol wins (tol less the specular terms, where the plan
+// leaves them out). One fixed length per object fails badly
 // (NOTES.md: 19 LSB seen); this adapts to the triangle's curvature and to how near it is to a
 // highlight. A decision per 16-px block was measured first and cost more than the Phong
 // evaluations it saved on small triangles (3x phong's time on the 4K spot frame).

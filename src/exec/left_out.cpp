@@ -29,6 +29,9 @@ std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeCons
     out.push_back(plural(f.triangles_hidden, "back face") +
                   " hidden behind their own closed mesh's front faces: never binned or shaded "
                   "(--hidden-faces draw keeps them)");
+  if (f.segments_no_specular > 0)
+    out.push_back(plural(f.segments_no_specular, "hybrid triangle") +
+                  ": segment ends lit without the specular term, which stays below 2^-24 on them");
   if (o.method != "auto") return out;
 
   if (k.lights.empty()) {

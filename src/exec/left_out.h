@@ -16,6 +16,7 @@ struct FrameFacts {
   long long tiles_total = 0;
   long long objects_culled = 0;  // objects wholly outside the view frustum
   long long triangles_hidden = 0;  // back faces their own mesh hides (front/self_occlusion.h)
+  long long segments_no_specular = 0;  // hybrid triangles whose segment ends skip the specular term
 };
 
 std::vector<std::string> left_out_report(const SceneGeometry& geometry, const ShadeConstants& shade,

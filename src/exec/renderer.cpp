@@ -249,18 +249,19 @@ struct Renderer::Impl {
     stats.paths.clear();
     stats.triangles_unclassified = tally.unclassified;
     stats.segment_triangles.clear();
-    stats.segment_split = 0;
+    stats.segment_split = stats.segment_no_specular = 0;
     if (setup.segment_steps != SegmentSteps::None) {
       SegmentTally segments = tally_segment_plans(frame);
       stats.segment_triangles = std::move(segments.by_log2_px);
       stats.segment_split = segments.split;
+      stats.segment_no_specular = segments.no_specular;
     }
     if (classified)
       for (int p = 1; p < kShadePathCount; ++p)
         stats.paths.push_back({kShadePathNames[p], tally.triangles[p], back_end.path_pixels[p]});
     stats.left_out = left_out_report(geometry, frame.shade, options,
                                      {classified ? &tally : nullptr, back_end, stats.tiles_total, objects_culled,
-                                      stats.triangles_hidden});
+                                      stats.triangles_hidden, stats.segment_no_specular});
     if (times) *times = t;
   }
 };

@@ -66,6 +66,8 @@ inline constexpr uint16_t kSegmentStepMask = 7 << kSegmentStepShift;
 inline constexpr int kSplitLightShift = 9;
 inline constexpr uint16_t kSplitLightMask = 31 << kSplitLightShift;
 inline constexpr int kMaxSplitLight = 30;
+// Bit 14: hybrid's segment ends leave the specular term out (SegmentPlan::specular false).
+inline constexpr uint16_t kSegmentNoSpecular = 1 << 14;
 static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
 
 // One chunk of the front end's work: the triangles it set up (in draw order) and the vertex
@@ -119,6 +121,7 @@ struct Frame {
   static int segment_step_px(const SetupTriangle& t) {
     return 1 << ((t.flags & kSegmentStepMask) >> kSegmentStepShift);
   }
+  static bool segment_specular(const SetupTriangle& t) { return !(t.flags & kSegmentNoSpecular); }
   static int split_light(const SetupTriangle& t) {  // -1: none
     return ((t.flags & kSplitLightMask) >> kSplitLightShift) - 1;
   }

@@ -41,9 +41,10 @@ void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t
       }
     }
     const SegmentPlan plan = hybrid_triangle_step(in, k.hybrid_tolerance);
-    t.flags = static_cast<uint16_t>((t.flags & ~(kSegmentStepMask | kSplitLightMask)) |
+    t.flags = static_cast<uint16_t>((t.flags & ~(kSegmentStepMask | kSplitLightMask | kSegmentNoSpecular)) |
                                     (std::countr_zero(unsigned(plan.step_px)) << kSegmentStepShift) |
-                                    ((plan.split_light + 1) << kSplitLightShift));
+                                    ((plan.split_light + 1) << kSplitLightShift) |
+                                    (plan.specular ? 0 : kSegmentNoSpecular));
   }
 }
 
@@ -55,6 +56,7 @@ SegmentTally tally_segment_plans(const Frame& frame) {
       const SetupTriangle& t = c.triangles[i];
       ++tally.by_log2_px[std::countr_zero(unsigned(Frame::segment_step_px(t)))];
       tally.split += Frame::split_light(t) >= 0;
+      tally.no_specular += Frame::segment_step_px(t) > 1 && !Frame::segment_specular(t);
     }
   return tally;
 }

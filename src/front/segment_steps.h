@@ -27,11 +27,12 @@ bool draws_segments(const SetupTriangle& t, SegmentSteps which);
 // size.
 void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last);
 
-// What the decisions came to, for the stats: triangles by log2 of their segment length, and
-// how many split a light.
+// What the decisions came to, for the stats: triangles by log2 of their segment length, how
+// many split a light, and how many segment ends (2+ px) go without the specular term.
 struct SegmentTally {
   std::vector<long long> by_log2_px;
   long long split = 0;
+  long long no_specular = 0;
 };
 SegmentTally tally_segment_plans(const Frame& frame);
 

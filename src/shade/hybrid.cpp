@@ -36,11 +36,12 @@ template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 class HybridRows {
  public:
   // For one triangle: its planes (which must outlive the rows' flush) and segment plan.
-  void start(const PhongSpanInput& in, int step, int split_light) {
+  void start(const PhongSpanInput& in, int step, int split_light, bool specular) {
     in_ = &in;
     step_ = step;
     shift_ = std::countr_zero(static_cast<unsigned>(step));
     split_ = split_light;
+    specular_ = specular;
     if (split_ >= 0)
       for (int c = 0; c < 3; ++c) split_kd_[c] = in.shade->lights[split_].color[c] * in.material->kd[c];
   }
@@ -71,16 +72,7 @@ class HybridRows {
     const int lanes = static_cast<int>(hn::Lanes(d));
     for (int j = ends_; j <= ends_ + lanes; ++j)  // padding: the last end repeated
       end_x_[j] = end_x_[ends_ - 1], end_dy_[j] = end_dy_[ends_ - 1];
-    for (int j = 0; j < ends_; j += lanes) {
-      const auto o = MakeLaneOffsets(d, in_->bary, hn::Load(di, end_x_ + j), hn::ConvertTo(d, hn::Load(di, end_dy_ + j)));
-      auto n_dot_l = hn::Zero(d);
-      const auto c = split_ >= 0 ? PhongColor<kLocal, kBrdf, true, true>(d, *in_, o, split_, &n_dot_l)
-                                 : PhongColor<kLocal, kBrdf>(d, *in_, o);
-      hn::Store(c.r, d, end_c_[0] + j);
-      hn::Store(c.g, d, end_c_[1] + j);
-      hn::Store(c.b, d, end_c_[2] + j);
-      hn::Store(n_dot_l, d, end_c_[3] + j);
-    }
+    specular_ ? light_ends<true>() : light_ends<false>();
     // Each end's segment to the next as a slope per pixel, once per end instead of a division
     // per pixel. The slopes of a row's last end (to the next row's first, or to the padding)
     // are never picked; the end past the last vector is zeroed so they stay finite.
@@ -101,6 +93,24 @@ class HybridRows {
   }
 
  private:
+  // Phong at every end; kSpecular = false where the plan found the specular terms negligible.
+  template <bool kSpecular>
+  void light_ends() {
+    const hn::ScalableTag<float> d;
+    const hn::RebindToSigned<decltype(d)> di;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    for (int j = 0; j < ends_; j += lanes) {
+      const auto o = MakeLaneOffsets(d, in_->bary, hn::Load(di, end_x_ + j), hn::ConvertTo(d, hn::Load(di, end_dy_ + j)));
+      auto n_dot_l = hn::Zero(d);
+      const auto c = split_ >= 0 ? PhongColor<kLocal, kBrdf, kSpecular, true>(d, *in_, o, split_, &n_dot_l)
+                                 : PhongColor<kLocal, kBrdf, kSpecular>(d, *in_, o);
+      hn::Store(c.r, d, end_c_[0] + j);
+      hn::Store(c.g, d, end_c_[1] + j);
+      hn::Store(c.b, d, end_c_[2] + j);
+      hn::Store(n_dot_l, d, end_c_[3] + j);
+    }
+  }
+
   struct Row {  // trivially constructible: the buffer of rows costs nothing to create
     int py, xl, xr, x0, x1, first_end;
     float* depth;
@@ -168,6 +178,7 @@ class HybridRows {
   // zeroing them (as std::optional's storage was) cost 12 KB of memset per triangle and tile.
   const PhongSpanInput* in_ = nullptr;
   int step_ = 1, shift_ = 0, split_ = -1;
+  bool specular_ = true;
   float split_kd_[3];  // the split light's colour times kd, per channel
   int rows_ = 0, ends_ = 0;
   Row rows_at_[kMaxRows];
@@ -180,7 +191,7 @@ template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
 void HybridSpanImpl(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,
                     RowTarget row) {
   HybridRows<kLocal, kSrgb, kBrdf> rows;
-  rows.start(in, run.step, run.split_light);
+  rows.start(in, run.step, run.split_light, run.specular);
   rows.add(py, run.xl, run.xr, x0, x1, row);
   rows.flush();
 }
@@ -192,7 +203,7 @@ void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
       frame, entry, tt, kHybridMinWidthPx,
       [&](const PhongSpanInput& in) {
         const SetupTriangle& t = frame.triangle(entry);
-        rows.start(in, Frame::segment_step_px(t), Frame::split_light(t));
+        rows.start(in, Frame::segment_step_px(t), Frame::split_light(t), Frame::segment_specular(t));
       },
       [&](const PhongSpanInput&, int xl, int xr, int py, int x0, int x1, RowTarget row) {
         rows.add(py, xl, xr, x0, x1, row);

@@ -69,13 +69,14 @@ struct PhongColor {
   float c[3];
 };
 // split_light >= 0 (hybrid's split light, classify/segment_step.h): that light's diffuse term is
-// left out and its unclamped N.L written to *split_n_dot_l.
+// left out and its unclamped N.L written to *split_n_dot_l. specular = false: no specular term
+// (the SIMD kSpecular = false; x + 0 gives x's bits).
 PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o, int split_light = -1,
-                              float* split_n_dot_l = nullptr);
+                              float* split_n_dot_l = nullptr, bool specular = true);
 // The same for a given unit normal (the --normals paths).
 PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
                                           const PixelOffsets& o, int split_light = -1,
-                                          float* split_n_dot_l = nullptr);
+                                          float* split_n_dot_l = nullptr, bool specular = true);
 
 // Scalar references: per pixel, the same float operations as the SIMD kernels.
 void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
@@ -85,6 +86,7 @@ struct HybridRun {
   int step;  // segment length for the triangle (classify/segment_step.h), 1 = per-pixel Phong
   int xl, xr;
   int split_light = -1;  // the light whose N.L is interpolated unclamped (SegmentPlan)
+  bool specular = true;  // false: the ends leave the specular term out (SegmentPlan)
 };
 void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
 

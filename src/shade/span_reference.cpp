@@ -58,18 +58,19 @@ namespace {
 // The interpolated normal (n/w, any length) normalised as the kernels' Normalize does, then lit.
 PhongColor phong_color_from_plane_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
                                                 const PixelOffsets& o, int split_light = -1,
-                                                float* split_n_dot_l = nullptr) {
+                                                float* split_n_dot_l = nullptr, bool specular = true) {
   const float len2 = (nx * nx + ny * ny) + nz * nz;
   const float inv_len = len2 >= fast_math::kMinInvSqrtInput ? fast_math::inv_sqrt(len2) : 0.0f;
-  return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o, split_light, split_n_dot_l);
+  return phong_color_from_normal_scalar(in, nx * inv_len, ny * inv_len, nz * inv_len, o, split_light, split_n_dot_l,
+                                        specular);
 }
 
 }  // namespace
 
 PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o, int split_light,
-                              float* split_n_dot_l) {
+                              float* split_n_dot_l, bool specular) {
   return phong_color_from_plane_normal_scalar(in, plane_at(in.n[0], o), plane_at(in.n[1], o), plane_at(in.n[2], o), o,
-                                              split_light, split_n_dot_l);
+                                              split_light, split_n_dot_l, specular);
 }
 
 void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
@@ -88,7 +89,8 @@ void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
 }
 
 PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
-                                          const PixelOffsets& o, int split_light, float* split_n_dot_l) {
+                                          const PixelOffsets& o, int split_light, float* split_n_dot_l,
+                                          bool specular) {
   const MaterialConstants& m = *in.material;
   const ShadeConstants& k = *in.shade;
   float vx = 0, vy = 0, vz = 0;  // toward the eye (local viewer)
@@ -116,9 +118,9 @@ PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, fl
       *split_n_dot_l = ndl;
       diffuse = 0.0f;
     }
-    const float specular = eval_brdf_one(m.lobe, ndh);
+    const float spec = specular ? eval_brdf_one(m.lobe, ndh) : 0.0f;
     for (int c = 0; c < 3; ++c)
-      rgb.c[c] = rgb.c[c] + light.color[c] * (m.kd[c] * diffuse + m.ks[c] * specular);
+      rgb.c[c] = rgb.c[c] + light.color[c] * (m.kd[c] * diffuse + m.ks[c] * spec);
   }
   return rgb;
 }
@@ -163,8 +165,8 @@ void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, 
     } else {
       const int ea = run.xl + ((px - run.xl) & ~(step - 1)), eb = std::min(ea + step, run.xr);
       float da = 0.0f, db = 0.0f;  // the split light's N.L at the ends
-      const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py), run.split_light, &da);
-      const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py), run.split_light, &db);
+      const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py), run.split_light, &da, run.specular);
+      const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py), run.split_light, &db, run.specular);
       // The slope per pixel, then the offset from ea: the SIMD kernel's operations in order.
       const float len = static_cast<float>(eb - ea), dx = static_cast<float>(px - ea);
       auto along = [&](float a, float b) { return a + dx * (eb > ea ? (b - a) / len : 0.0f); };

@@ -44,6 +44,7 @@ TEST_F(Cli, HybridStatsCountSegmentPlans) {
   for (const auto& count : segments["triangles"]) listed += count.get<long long>();
   EXPECT_GT(listed, 0);
   EXPECT_LE(segments["split_light"].get<long long>(), listed);
+  EXPECT_LE(segments["no_specular"].get<long long>(), listed);
 }
 
 TEST_F(Cli, CompareReportsIdenticalImages) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -149,8 +150,14 @@ TEST(SegmentSteps, TalliedInTheStats) {
   EXPECT_GT(segmented, 0);
   EXPECT_LE(listed, hybrid.triangles_drawn);
   EXPECT_LE(hybrid.segment_split, segmented) << "only triangles with segments split a light";
+  EXPECT_GT(hybrid.segment_no_specular, 0) << "the default scene's far sides are far from every highlight";
+  EXPECT_LE(hybrid.segment_no_specular, segmented) << "only triangles with segments light their ends";
+  EXPECT_TRUE(std::any_of(hybrid.left_out.begin(), hybrid.left_out.end(), [&](const std::string& line) {
+    return line.find(std::to_string(hybrid.segment_no_specular) + " hybrid triangles: segment ends lit without") == 0;
+  })) << "--explain says what was left out";
   EXPECT_TRUE(phong.segment_triangles.empty());
   EXPECT_EQ(phong.segment_split, 0);
+  EXPECT_EQ(phong.segment_no_specular, 0);
 }
 
 }  // namespace

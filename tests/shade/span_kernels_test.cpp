@@ -180,17 +180,19 @@ TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
   for (const std::string& isa : available_isas()) {
     select_isa(isa);
     for (int split_light : {-1, 0})
+      for (bool specular : {true, false})
       for (int step : {1, 2, 4, 8, 16}) {
         // A split light's rows reach past its terminator (normals' z down to -0.6).
         const PhongSpanInput in = scene.random_input(rng, -0.5f, split_light < 0 ? 0.5f : -0.6f);
-        const HybridRun run{step, 145, 190, split_light};  // the row's run starts and ends off the blocks
+        const HybridRun run{step, 145, 190, split_light, specular};  // the row's run starts and ends off the blocks
         if (split_light >= 0) {
           float nl_a = 0, nl_b = 0;
           phong_color_scalar(in, pixel_offsets(in.bary, run.xl, 100), split_light, &nl_a);
           phong_color_scalar(in, pixel_offsets(in.bary, run.xr, 100), split_light, &nl_b);
           terminator_rows += (nl_a < 0) != (nl_b < 0);
         }
-        expect_same("hybrid " + isa + " step " + std::to_string(step) + " split " + std::to_string(split_light), rng, 1,
+        expect_same("hybrid " + isa + " step " + std::to_string(step) + " split " + std::to_string(split_light) +
+                        (specular ? "" : " no specular"), rng, 1,
                     [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
                     [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
       }
@@ -417,6 +419,11 @@ TEST(HybridStep, FollowsCurvatureAndHighlights) {
   EXPECT_GE(step_for({1, 0, 0.2f}, {1, 0.3f, 0.35f}, {1, -0.3f, 0.3f}),
             step_for({0.4f, 0, 1}, {-0.4f, 0.3f, 1}, {0, -0.4f, 1}));
   EXPECT_GT(step_for({1, 0, 0.2f}, {1, 0.003f, 0.202f}, {1, -0.003f, 0.201f}), 1);
+  // The specular term stays only where it can reach 2^-24 (n = 100, ks = 0.5: N.H above 0.85).
+  EXPECT_TRUE(c.plan({0.4f, 0, 1}, {-0.4f, 0.3f, 1}, {0, -0.4f, 1}).specular);
+  EXPECT_TRUE(c.plan({0.5f, 0, 1}, {0.5f, 0, 1}, {0.5f, 0, 1}).specular);     // N.H = 0.894
+  EXPECT_FALSE(c.plan({0.7f, 0, 1}, {0.7f, 0, 1}, {0.7f, 0, 1}).specular);    // N.H = 0.819
+  EXPECT_FALSE(c.plan({1, 0, 0.2f}, {1, 0.3f, 0.35f}, {1, -0.3f, 0.3f}).specular);
   // No budget: always per pixel.
   SegmentStepInput in;
   in.material = &c.m;
