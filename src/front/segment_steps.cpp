@@ -49,10 +49,10 @@ void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t
 }
 
 SegmentTally tally_segment_plans(const Frame& frame) {
-  SegmentTally tally;
-  tally.by_log2_px.assign(std::countr_zero(unsigned(limits::kSeedBlockPx)) + 1, 0);
+  SegmentTally tally;  // left empty where no triangle reached hybrid (auto without a highlight)
   for (const Chunk& c : frame.chunks)
     for (const uint32_t i : c.segment_pending) {
+      if (tally.by_log2_px.empty()) tally.by_log2_px.assign(std::countr_zero(unsigned(limits::kSeedBlockPx)) + 1, 0);
       const SetupTriangle& t = c.triangles[i];
       ++tally.by_log2_px[std::countr_zero(unsigned(Frame::segment_step_px(t)))];
       tally.split += Frame::split_light(t) >= 0;

@@ -28,7 +28,8 @@ bool draws_segments(const SetupTriangle& t, SegmentSteps which);
 void decide_segment_steps(Frame& frame, uint32_t chunk, uint32_t first, uint32_t last);
 
 // What the decisions came to, for the stats: triangles by log2 of their segment length, how
-// many split a light, and how many segment ends (2+ px) go without the specular term.
+// many split a light, and how many segment ends (2+ px) go without the specular term. Empty
+// where no triangle reached hybrid: --explain then prints no plan of zeros.
 struct SegmentTally {
   std::vector<long long> by_log2_px;
   long long split = 0;

@@ -158,6 +158,15 @@ TEST(SegmentSteps, TalliedInTheStats) {
   EXPECT_TRUE(phong.segment_triangles.empty());
   EXPECT_EQ(phong.segment_split, 0);
   EXPECT_EQ(phong.segment_no_specular, 0);
+  // auto with no triangle on its specular path (the threshold above any highlight, every block
+  // classified) reports no plan, rather than one of zeros.
+  RenderOptions o;
+  o.method = "auto";
+  o.spec_threshold = 1.0;
+  o.classify_min_px = 0.0;
+  Renderer dull(scene, o);
+  dull.render_frame();
+  EXPECT_TRUE(dull.last_stats().segment_triangles.empty());
 }
 
 }  // namespace
