@@ -66,6 +66,7 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
     MaterialTerms t;
     t.shininess = m.shininess_d;
     glm::dvec3 brightest(k.ambient);
+    double spec_sum = 0.0;  // the lights' ks * colour, max channel each
     for (const LightView& light : k.lights) {
       LightTerms lt;
       lt.spec_weight = max_channel(light.color * m.ks);
@@ -77,13 +78,16 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
       lt.cos_negligible = cos_below(kNegligible * p.spec_threshold);
       lt.cos_share = cos_below(p.spec_threshold / double(k.lights.size()));
       lt.cos_alone = cos_below(p.spec_threshold);
-      t.has_specular = t.has_specular || lt.spec_weight > 0.0;
+      spec_sum += lt.spec_weight;
       if (lt.spec_weight >= p.spec_threshold)
         t.highlight_lights |= uint64_t(1) << std::min<std::size_t>(t.lights.size(), 63);
       t.lights.push_back(lt);
       brightest += glm::dvec3(light.color * m.kd);
     }
     t.may_saturate = std::max({brightest.r, brightest.g, brightest.b}) > 1.0;
+    // Every light's term at its peak N.H = 1 together: below the threshold, classify() sends
+    // none of the material's triangles to the specular path, and neither may a dense block.
+    t.can_highlight = spec_sum > 0.0 && spec_sum >= p.spec_threshold;
     ConeBatchTerms batch;
     batch.spec_threshold = p.spec_threshold;
     batch.gouraud_budget = p.gouraud_budget;

@@ -59,10 +59,11 @@ class Classifier {
   // normals depend on facing), or colours that may saturate.
   const ConeBatchTerms* cone_batch_terms(int material) const;
   const ShadeConstants& shade() const { return shade_; }
-  // Whether any light puts a specular term on this material, and the lights whose term alone
-  // may reach the threshold somewhere (bit i: light i; 63: 63 and up): a superset of what
-  // classify() reports for any of its triangles.
-  bool has_specular(int material) const { return materials_[material].has_specular; }
+  // Whether the lights' specular terms on this material can reach the threshold anywhere (all
+  // at N.H = 1; a threshold of 0 asks only for a term), and the lights whose term alone may
+  // reach it somewhere (bit i: light i; 63: 63 and up): a superset of what classify() reports
+  // for any of its triangles.
+  bool can_highlight(int material) const { return materials_[material].can_highlight; }
   uint64_t highlight_lights(int material) const { return materials_[material].highlight_lights; }
 
  private:
@@ -77,7 +78,7 @@ class Classifier {
     std::vector<LightTerms> lights;
     double shininess;
     bool may_saturate;     // ambient + sum kd * colour can exceed 1 in some channel
-    bool has_specular = false;
+    bool can_highlight = false;
     uint64_t highlight_lights = 0;  // lights with spec_weight >= the threshold
   };
   struct Bounds {

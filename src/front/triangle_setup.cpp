@@ -43,7 +43,7 @@ class ChunkBuilder {
       const uint16_t material = g.triangle_material[sources[run]];
       int end = run + 1;
       while (end < count && g.triangle_material[sources[end]] == material) ++end;
-      if (dense && p_.classifier->has_specular(material)) {
+      if (dense && p_.classifier->can_highlight(material)) {
         std::fill(planned + run, planned + end, ShadePath::Specular);
         std::fill(planned_lights + run, planned_lights + end, p_.classifier->highlight_lights(material));
         chunk_.paths.unclassified += end - run;
