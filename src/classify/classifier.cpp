@@ -85,8 +85,9 @@ Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : sha
       brightest += glm::dvec3(light.color * m.kd);
     }
     t.may_saturate = std::max({brightest.r, brightest.g, brightest.b}) > 1.0;
-    // Every light's term at its peak N.H = 1 together: below the threshold, classify() sends
-    // none of the material's triangles to the specular path, and neither may a dense block.
+    // Every light's term at its peak N.H = 1 together: below the threshold no triangle of the
+    // material can show a highlight, so a dense block of them is classified, not sent to the
+    // specular path (classify() still decides each triangle, safely).
     t.can_highlight = spec_sum > 0.0 && spec_sum >= p.spec_threshold;
     ConeBatchTerms batch;
     batch.spec_threshold = p.spec_threshold;
