@@ -21,11 +21,12 @@ jobs=$(nproc)
 if [ ! -f build/build.ninja ]; then
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
 fi
-cmake --build build -j "$jobs" >&2
 
 if [ "$mode" = render ]; then
+  # Only what rendering needs: the library and the program, not the tests or benchmarks.
+  cmake --build build -j "$jobs" --target fastshade >&2
   mkdir -p out
   exec build/fastshade render -o out/default.png
-else
-  exec ctest --test-dir build --output-on-failure -j "$jobs"
 fi
+cmake --build build -j "$jobs" >&2
+exec ctest --test-dir build --output-on-failure -j "$jobs"

@@ -13,6 +13,7 @@
 #include <hwy/highway.h>
 
 #include "shade/brdf.h"
+#include "shade/brdf_variants.h"  // LobeKernel
 #include "shade/fast_math-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -56,6 +57,29 @@ HWY_INLINE V Brdf(D d, V c_in, const BrdfParams& p) {
     r = hn::IfThenElseZero(hn::Lt(x, hn::Set(d, p.x_root)), hn::Min(hn::Max(v, hn::Zero(d)), one));
   }
   return hn::IfThenElseZero(positive, r);
+}
+
+// The lobe of a shading kernel compiled for kLobe (shade/brdf_variants.h): Brdf<Exact>, or
+// Brdf of the material's kind, switched per call.
+template <LobeKernel kLobe, class D, class V = hn::Vec<D>>
+HWY_INLINE V SpecularLobe(D d, V c, const BrdfParams& p) {
+  if constexpr (kLobe == LobeKernel::Exact) {
+    return Brdf<BrdfKind::Exact>(d, c, p);
+  } else {
+    // Written out, not through with_brdf_kind: that template is compiled outside this target's
+    // attributes, and a vector passed through it crashes (AVX-512 values in an SSE2 function).
+    switch (p.kind) {
+      case BrdfKind::Exact: return Brdf<BrdfKind::Exact>(d, c, p);
+      case BrdfKind::CosK: return Brdf<BrdfKind::CosK>(d, c, p);
+      case BrdfKind::Schlick: return Brdf<BrdfKind::Schlick>(d, c, p);
+      case BrdfKind::SchlickPow2: return Brdf<BrdfKind::SchlickPow2>(d, c, p);
+      case BrdfKind::Quadratic: return Brdf<BrdfKind::Quadratic>(d, c, p);
+      case BrdfKind::QuadraticFit: return Brdf<BrdfKind::QuadraticFit>(d, c, p);
+      case BrdfKind::Poly2: return Brdf<BrdfKind::Poly2>(d, c, p);
+      case BrdfKind::Poly3: break;
+    }
+    return Brdf<BrdfKind::Poly3>(d, c, p);
+  }
 }
 
 }  // namespace HWY_NAMESPACE

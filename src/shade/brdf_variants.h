@@ -1,6 +1,6 @@
-// Run-time (viewer, output curve, BRDF) to the template instantiation that bakes them in:
-// kernels are compiled per variant so their loops carry no switch; the choice is made once
-// per frame or per call.
+// Run-time (viewer, BRDF) to the template instantiation that bakes them in: kernels are
+// compiled per variant so their loops carry no switch on the viewer and the default lobe; the
+// choice is made once per frame or per call.
 #pragma once
 #include <type_traits>
 
@@ -25,16 +25,33 @@ decltype(auto) with_brdf_kind(BrdfKind kind, F&& f) {
   return f(std::integral_constant<BrdfKind, BrdfKind::Poly3>());
 }
 
+// The lobe a per-pixel shading kernel is compiled for. The default lobe (exact c^n) is baked
+// in; the seven approximations share one instantiation that switches on the material's
+// BrdfKind per vector (SpecularLobe in shade/brdf-inl.h), and the sRGB curve is a run-time
+// flag (PackRGBA in shade/span_loop-inl.h). One instantiation per lobe and curve (32 per
+// kernel, times 4 ISAs) made hybrid.cpp, phong.cpp and phong_normals.cpp take 5-7 minutes
+// each to compile; now they take about a minute. The branches go the same way all frame:
+// alternated on spot 4K, phong, hybrid, auto and the approximations stayed within noise
+// (docs/BUILDING.md, "Build time").
+enum class LobeKernel {
+  Exact,   // exp2(n log2 c), the default --brdf
+  ByKind,  // any BrdfKind, chosen per vector from the material's lobe
+};
+
+inline LobeKernel lobe_kernel(BrdfKind kind) {
+  return kind == BrdfKind::Exact ? LobeKernel::Exact : LobeKernel::ByKind;
+}
+
 }  // namespace fastshade
 
-// Defines NAME(bool local, bool srgb, BrdfKind kind) returning &FN<local, srgb, kind> as TYPE.
+// Defines NAME(bool local, BrdfKind kind) returning &FN<local, lobe_kernel(kind)> as TYPE.
 // Expand inside the per-target namespace.
 #define FASTSHADE_DEFINE_VARIANT_PICKER(NAME, FN, TYPE)                                          \
-  template <bool kLocal, bool kSrgb>                                                            \
-  TYPE NAME##ForFlags(BrdfKind kind) {                                                          \
-    return with_brdf_kind(kind, [](auto k) -> TYPE { return &FN<kLocal, kSrgb, decltype(k)::value>; }); \
+  template <bool kLocal>                                                                        \
+  TYPE NAME##ForViewer(BrdfKind kind) {                                                         \
+    return lobe_kernel(kind) == LobeKernel::Exact ? &FN<kLocal, LobeKernel::Exact>               \
+                                                  : &FN<kLocal, LobeKernel::ByKind>;             \
   }                                                                                             \
-  inline TYPE NAME(bool local, bool srgb, BrdfKind kind) {                                      \
-    if (local) return srgb ? NAME##ForFlags<true, true>(kind) : NAME##ForFlags<true, false>(kind); \
-    return srgb ? NAME##ForFlags<false, true>(kind) : NAME##ForFlags<false, false>(kind);          \
+  inline TYPE NAME(bool local, BrdfKind kind) {                                                 \
+    return local ? NAME##ForViewer<true>(kind) : NAME##ForViewer<false>(kind);                  \
   }

@@ -40,11 +40,11 @@ HWY_INLINE ColorVecs<D> DiffuseQuotientColor(D d, const PhongSpanInput& in, cons
 }
 
 // The quotient's pixels, quantised and packed (PhongShade's counterpart).
-template <bool kSrgb, class D>
+template <class D>
 HWY_INLINE auto DiffuseQuotientShade(D d, const PhongSpanInput& in, const DiffuseQuotient& dq,
                                      const LaneOffsets<D>& o) {
   const ColorVecs<D> c = DiffuseQuotientColor(d, in, dq, o);
-  return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+  return PackRGBA(d, c.r, c.g, c.b, in.shade->srgb);
 }
 
 }  // namespace HWY_NAMESPACE

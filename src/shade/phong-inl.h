@@ -43,10 +43,10 @@ HWY_INLINE void set_up_phong_planes(const Frame& frame, uint32_t entry, const Se
   if constexpr (kLocal) planes_over_w(&AttrArrays::pos_view, 1.0f, in.p, in.inv_w);
 }
 
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, class D>
+template <bool kLocal, LobeKernel kLobe, bool kSpecular = true, class D>
 HWY_INLINE auto PhongShade(D d, const PhongSpanInput& in, const LaneOffsets<D>& o) {
-  const ColorVecs<D> c = PhongColor<kLocal, kBrdf, kSpecular>(d, in, o);
-  return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+  const ColorVecs<D> c = PhongColor<kLocal, kLobe, kSpecular>(d, in, o);
+  return PackRGBA(d, c.r, c.g, c.b, in.shade->srgb);
 }
 
 // The diffuse quotient of a binned triangle (shade/diffuse_quotient.h), from its planes in `in`;
@@ -70,11 +70,11 @@ HWY_INLINE bool ShadesInDouble(const Frame& frame, uint32_t entry) {
 // kQueued (a viewer at infinity): the lanes of small triangles wait in the tile's pixel queue
 // and are lit a full vector at a time (shade/pixel_queue.h); row spans light at once, after
 // whatever waits, so colours still land in draw order.
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, bool kQueued = false>
+template <bool kLocal, LobeKernel kLobe, bool kSpecular = true, bool kQueued = false>
 void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   static_assert(!(kQueued && (kLocal || !kSpecular)), "the queue holds normals lit by a viewer at infinity");
   if constexpr (kQueued) {
-    if (!tt.pending) return DrawPhong<kLocal, kSrgb, kBrdf>(frame, entry, tt);
+    if (!tt.pending) return DrawPhong<kLocal, kLobe>(frame, entry, tt);
   }
   if (kSpecular && ShadesInDouble(frame, entry)) {
     if constexpr (kQueued) light_pending(*tt.pending, tt);
@@ -102,19 +102,19 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   auto shade = [&](auto d, const auto& o) __attribute__((always_inline)) {
     if (!ready) set_up();
     if constexpr (kQueued) {
-      if (tt.pending->count > 0) LightQueue<kSrgb, kBrdf>(*tt.pending, tt, true);
+      if (tt.pending->count > 0) LightQueue<kLobe>(*tt.pending, tt, true);
     }
     if constexpr (!kSpecular) {
       // Decided once per triangle, at set-up; set-up waits for the first vector that passes
       // the depth test, so the choice is a branch here that goes the same way every vector.
-      if (quotient) return DiffuseQuotientShade<kSrgb>(d, in, dq, o);
+      if (quotient) return DiffuseQuotientShade(d, in, dq, o);
     }
-    return PhongShade<kLocal, kSrgb, kBrdf, kSpecular>(d, in, o);
+    return PhongShade<kLocal, kLobe, kSpecular>(d, in, o);
   };
   if constexpr (kQueued) {
     auto defer = [&](auto d, auto pass, auto z, const auto& o, const int32_t* lane_at) {
       if (!ready) set_up();
-      EnqueuePassed<kSrgb, kBrdf>(d, pass, z, EvalPlane(d, in.n[0], o), EvalPlane(d, in.n[1], o),
+      EnqueuePassed<kLobe>(d, pass, z, EvalPlane(d, in.n[0], o), EvalPlane(d, in.n[1], o),
                                   EvalPlane(d, in.n[2], o), lane_at, in, tt);
     };
     ShadeTriangle(tri, tt, Deferring<decltype(shade), decltype(defer)>{shade, defer});
@@ -134,13 +134,13 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
 struct NoFinish {
   void operator()(const PhongSpanInput&) const {}
 };
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true, typename OnSetup, typename Run,
+template <bool kLocal, LobeKernel kLobe, bool kSpecular = true, typename OnSetup, typename Run,
           typename Finish = NoFinish>
 HWY_INLINE void DrawByRowRuns(const Frame& frame, uint32_t entry, const TileTarget& tt,
                               int min_width_px, OnSetup&& on_setup, Run&& run, Finish&& finish = {}) {
   const SetupTriangle& whole = frame.triangle(entry);
   if (whole.px_max[0] - whole.px_min[0] + 1 < min_width_px || (kSpecular && ShadesInDouble(frame, entry))) {
-    DrawPhong<kLocal, kSrgb, kBrdf, kSpecular, kSpecular && !kLocal>(frame, entry, tt);
+    DrawPhong<kLocal, kLobe, kSpecular, kSpecular && !kLocal>(frame, entry, tt);
     return;
   }
   // The narrow triangles' lanes may wait in the tile's queue: they land before this one stores.

@@ -17,17 +17,17 @@ HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
 
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+template <bool kLocal, LobeKernel kLobe>
 void PhongSpanVariant(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
   ShadeSpan(in.bary, in.depth, py, x0, x1, row,
-            [&](auto d, const auto& o) { return PhongShade<kLocal, kSrgb, kBrdf>(d, in, o); });
+            [&](auto d, const auto& o) { return PhongShade<kLocal, kLobe>(d, in, o); });
 }
 
 // The `phong` method's draw: with a viewer at infinity, small triangles' pixels wait in the
 // tile's queue to be lit a full vector at a time (shade/pixel_queue.h).
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf>
+template <bool kLocal, LobeKernel kLobe>
 void DrawPhongMethod(const Frame& frame, uint32_t entry, const TileTarget& tt) {
-  DrawPhong<kLocal, kSrgb, kBrdf, true, !kLocal>(frame, entry, tt);
+  DrawPhong<kLocal, kLobe, true, !kLocal>(frame, entry, tt);
 }
 
 using PhongSpanFn = void (*)(const PhongSpanInput&, int, int, int, RowTarget);
@@ -35,33 +35,21 @@ FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhong, DrawPhongMethod, DrawTriangleFn)
 FASTSHADE_DEFINE_VARIANT_PICKER(PickPhongSpan, PhongSpanVariant, PhongSpanFn)
 
 // Diffuse only: no half vector, so neither the viewer nor the lobe matters.
-DrawTriangleFn SelectPhongDiffuse(bool srgb) {
-  return srgb ? &DrawPhong<false, true, BrdfKind::Exact, false>
-              : &DrawPhong<false, false, BrdfKind::Exact, false>;
-}
+DrawTriangleFn SelectPhongDiffuse() { return &DrawPhong<false, LobeKernel::Exact, false>; }
 
 void PhongSpan(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
-  PickPhongSpan(in.shade->local_viewer, in.shade->srgb, in.material->lobe.kind)(in, py, x0, x1, row);
-}
-
-template <bool kSrgb>
-void DiffuseQuotientSpanVariant(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
-                                RowTarget row) {
-  ShadeSpan(in.bary, in.depth, py, x0, x1, row,
-            [&](auto d, const auto& o) { return DiffuseQuotientShade<kSrgb>(d, in, dq, o); });
+  PickPhongSpan(in.shade->local_viewer, in.material->lobe.kind)(in, py, x0, x1, row);
 }
 
 void DiffuseQuotientSpan(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
                          RowTarget row) {
-  if (in.shade->srgb) DiffuseQuotientSpanVariant<true>(in, dq, py, x0, x1, row);
-  else DiffuseQuotientSpanVariant<false>(in, dq, py, x0, x1, row);
+  ShadeSpan(in.bary, in.depth, py, x0, x1, row,
+            [&](auto d, const auto& o) { return DiffuseQuotientShade(d, in, dq, o); });
 }
 
 void LightPixelQueue(PixelQueue& queue, const TileTarget& target, bool all) {
-  with_brdf_kind(queue.material->lobe.kind, [&](auto kind) {
-    if (queue.shade->srgb) LightQueue<true, decltype(kind)::value>(queue, target, all);
-    else LightQueue<false, decltype(kind)::value>(queue, target, all);
-  });
+  if (lobe_kernel(queue.material->lobe.kind) == LobeKernel::Exact) LightQueue<LobeKernel::Exact>(queue, target, all);
+  else LightQueue<LobeKernel::ByKind>(queue, target, all);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -83,11 +71,11 @@ AttrNeeds phong_needs(const ShadeConstants& shade) {
 
 DrawTriangleFn select_phong(const ShadeConstants& shade) {
   if (shade.normals != SpanNormals::Normalize) return select_phong_normals(shade);
-  return HWY_DYNAMIC_DISPATCH(SelectPhong)(shade.local_viewer, shade.srgb, shade.brdf.kind);
+  return HWY_DYNAMIC_DISPATCH(SelectPhong)(shade.local_viewer, shade.brdf.kind);
 }
 
-DrawTriangleFn select_phong_diffuse(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectPhongDiffuse)(shade.srgb);
+DrawTriangleFn select_phong_diffuse(const ShadeConstants&) {  // the output curve is read per frame
+  return HWY_DYNAMIC_DISPATCH(SelectPhongDiffuse)();
 }
 
 void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {

@@ -52,21 +52,21 @@ HWY_INLINE void AddLight(D d, const MaterialConstants& m, const LightView& light
 // kSpecular = false: the diffuse-only colour (`auto`'s per-pixel diffuse path). kSplit (hybrid's
 // split light, classify/segment_step.h): light split_light's diffuse term is left out and its
 // unclamped N.L written to *split_n_dot_l.
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, bool kSplit = false, class D, class V = hn::Vec<D>>
+template <bool kLocal, LobeKernel kLobe, bool kSpecular = true, bool kSplit = false, class D, class V = hn::Vec<D>>
 HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
                                              const LaneOffsets<D>& o, int split_light = -1,
                                              V* split_n_dot_l = nullptr);
 
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular = true, bool kSplit = false, class D, class V = hn::Vec<D>>
+template <bool kLocal, LobeKernel kLobe, bool kSpecular = true, bool kSplit = false, class D, class V = hn::Vec<D>>
 HWY_INLINE ColorVecs<D> PhongColor(D d, const PhongSpanInput& in, const LaneOffsets<D>& o, int split_light = -1,
                                    V* split_n_dot_l = nullptr) {
   V nx = EvalPlane(d, in.n[0], o), ny = EvalPlane(d, in.n[1], o), nz = EvalPlane(d, in.n[2], o);
   Normalize(d, nx, ny, nz);
-  return PhongColorFromNormal<kLocal, kBrdf, kSpecular, kSplit>(d, in, nx, ny, nz, o, split_light, split_n_dot_l);
+  return PhongColorFromNormal<kLocal, kLobe, kSpecular, kSplit>(d, in, nx, ny, nz, o, split_light, split_n_dot_l);
 }
 
 // Blinn-Phong for unit normals in lanes; phong_color_from_normal_scalar() is its twin.
-template <bool kLocal, BrdfKind kBrdf, bool kSpecular, bool kSplit, class D, class V>
+template <bool kLocal, LobeKernel kLobe, bool kSpecular, bool kSplit, class D, class V>
 HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx, V ny, V nz,
                                              const LaneOffsets<D>& o, int split_light, V* split_n_dot_l) {
   const MaterialConstants& m = *in.material;
@@ -105,7 +105,7 @@ HWY_INLINE ColorVecs<D> PhongColorFromNormal(D d, const PhongSpanInput& in, V nx
         hy = hn::Set(d, light.h_view.y);
         hz = hn::Set(d, light.h_view.z);
       }
-      specular = Brdf<kBrdf>(d, Dot3<D>(nx, ny, nz, hx, hy, hz), m.lobe);
+      specular = SpecularLobe<kLobe>(d, Dot3<D>(nx, ny, nz, hx, hy, hz), m.lobe);
     }
     AddLight<kSpecular>(d, m, light, diffuse, specular, acc);
   }

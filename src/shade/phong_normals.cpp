@@ -21,7 +21,7 @@ namespace HWY_NAMESPACE {
 // pixel: a block's end normals would cost as much as the pixels.
 inline constexpr int kBlockNormalsMinWidthPx = 8;
 
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
+template <bool kLocal, LobeKernel kLobe, bool kSpecular = true>
 void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
                      int py, int x0, int x1, RowTarget row) {
   const hn::ScalableTag<float> d;
@@ -35,20 +35,20 @@ void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, cons
       auto mix = [&](int c) {
         return hn::Add(hn::Mul(alpha, hn::Set(d, nb.na[c])), hn::Mul(beta, hn::Set(d, nb.nz[c])));
       };
-      const auto c = PhongColorFromNormal<kLocal, kBrdf, kSpecular>(d, in, mix(0), mix(1), mix(2), o);
-      return PackRGBA<kSrgb>(d, c.r, c.g, c.b);
+      const auto c = PhongColorFromNormal<kLocal, kLobe, kSpecular>(d, in, mix(0), mix(1), mix(2), o);
+      return PackRGBA(d, c.r, c.g, c.b, in.shade->srgb);
     });
   }
 }
 
 // kSpecular = false: `auto`'s per-pixel diffuse path under --normals adaptive|equal-angle.
-template <bool kLocal, bool kSrgb, BrdfKind kBrdf, bool kSpecular = true>
+template <bool kLocal, LobeKernel kLobe, bool kSpecular = true>
 void DrawPhongNormals(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadeConstants& k = frame.shade;
-  DrawByRowRuns<kLocal, kSrgb, kBrdf, kSpecular>(
+  DrawByRowRuns<kLocal, kLobe, kSpecular>(
       frame, entry, tt, kBlockNormalsMinWidthPx, [](const PhongSpanInput&) {},
       [&](const PhongSpanInput& in, int xl, int xr, int py, int x0, int x1, RowTarget row) {
-        NormalsSpanImpl<kLocal, kSrgb, kBrdf, kSpecular>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0,
+        NormalsSpanImpl<kLocal, kLobe, kSpecular>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0,
                                               x1, row);
       });
 }
@@ -58,14 +58,11 @@ using NormalsSpanFn = void (*)(const PhongSpanInput&, SpanNormals, float, const 
 FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhongNormals, DrawPhongNormals, DrawTriangleFn)
 FASTSHADE_DEFINE_VARIANT_PICKER(PickNormalsSpan, NormalsSpanImpl, NormalsSpanFn)
 
-DrawTriangleFn SelectPhongNormalsDiffuse(bool srgb) {
-  return srgb ? &DrawPhongNormals<false, true, BrdfKind::Exact, false>
-              : &DrawPhongNormals<false, false, BrdfKind::Exact, false>;
-}
+DrawTriangleFn SelectPhongNormalsDiffuse() { return &DrawPhongNormals<false, LobeKernel::Exact, false>; }
 
 void NormalsSpan(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
                  int x0, int x1, RowTarget row) {
-  PickNormalsSpan(in.shade->local_viewer, in.shade->srgb, in.material->lobe.kind)(in, mode, tol, run, py,
+  PickNormalsSpan(in.shade->local_viewer, in.material->lobe.kind)(in, mode, tol, run, py,
                                                                                   x0, x1, row);
 }
 
@@ -81,11 +78,11 @@ HWY_EXPORT(NormalsSpan);
 HWY_EXPORT(SelectPhongNormalsDiffuse);
 
 DrawTriangleFn select_phong_normals(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectPhongNormals)(shade.local_viewer, shade.srgb, shade.brdf.kind);
+  return HWY_DYNAMIC_DISPATCH(SelectPhongNormals)(shade.local_viewer, shade.brdf.kind);
 }
 
-DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectPhongNormalsDiffuse)(shade.srgb);
+DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants&) {  // as select_phong_diffuse
+  return HWY_DYNAMIC_DISPATCH(SelectPhongNormalsDiffuse)();
 }
 
 void normals_span(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,

@@ -25,7 +25,7 @@ namespace HWY_NAMESPACE {
 static_assert(3 * kMaxLanes <= limits::kPixelQueueCapacity, "a queue below one vector, a vector added, a vector read");
 
 // LightQueueFn for a viewer at infinity: the entries' colours, stored in the order they came.
-template <bool kSrgb, BrdfKind kBrdf>
+template <LobeKernel kLobe>
 void LightQueue(PixelQueue& q, const TileTarget& tt, bool all) {
   using D = hn::ScalableTag<float>;
   const D d;
@@ -40,8 +40,8 @@ void LightQueue(PixelQueue& q, const TileTarget& tt, bool all) {
   for (int j = 0; j < n; j += lanes) {
     auto nx = hn::Load(d, q.nx + j), ny = hn::Load(d, q.ny + j), nz = hn::Load(d, q.nz + j);
     Normalize(d, nx, ny, nz);
-    const ColorVecs<D> c = PhongColorFromNormal<false, kBrdf>(d, in, nx, ny, nz, unused);
-    hn::Store(hn::Xor(PackRGBA<kSrgb>(d, c.r, c.g, c.b), hn::Set(du, q.alpha_xor)), du, rgba);
+    const ColorVecs<D> c = PhongColorFromNormal<false, kLobe>(d, in, nx, ny, nz, unused);
+    hn::Store(hn::Xor(PackRGBA(d, c.r, c.g, c.b, q.shade->srgb), hn::Set(du, q.alpha_xor)), du, rgba);
     const int m = std::min(lanes, n - j);
     for (int i = 0; i < m; ++i) tt.color[q.at[j + i]] = rgba[i];
   }
@@ -64,16 +64,16 @@ void LightQueue(PixelQueue& q, const TileTarget& tt, bool all) {
 // 1.4 ns a vector (docs/PERFORMANCE.md, session 16). On narrower targets Highway emulates the
 // compress with tables, which cost more than copying the passed lanes one by one (callgrind,
 // AVX2, bunny phong: 331 M instructions against 258 M; session 11).
-template <bool kSrgb, BrdfKind kBrdf, class D, class V = hn::Vec<D>>
+template <LobeKernel kLobe, class D, class V = hn::Vec<D>>
 HWY_INLINE void EnqueuePassed(D d, hn::Mask<D> pass, V z, V nx, V ny, V nz, const int32_t* lane_at,
                               const PhongSpanInput& in, const TileTarget& tt) {
   PixelQueue& q = *tt.pending;
-  if (q.material != in.material || q.shade != in.shade || q.light != &LightQueue<kSrgb, kBrdf> ||
+  if (q.material != in.material || q.shade != in.shade || q.light != &LightQueue<kLobe> ||
       q.alpha_xor != tt.alpha_xor) {
-    if (q.count > 0) LightQueue<kSrgb, kBrdf>(q, tt, true);
+    if (q.count > 0) LightQueue<kLobe>(q, tt, true);
     q.material = in.material;
     q.shade = in.shade;
-    q.light = &LightQueue<kSrgb, kBrdf>;
+    q.light = &LightQueue<kLobe>;
     q.alpha_xor = tt.alpha_xor;
   }
   alignas(64) float lane_z[kMaxLanes];
@@ -105,7 +105,7 @@ HWY_INLINE void EnqueuePassed(D d, hn::Mask<D> pass, V z, V nx, V ny, V nz, cons
   }
   q.count = n;
 #endif
-  if (q.count >= static_cast<int>(hn::Lanes(hn::ScalableTag<float>()))) LightQueue<kSrgb, kBrdf>(q, tt, false);
+  if (q.count >= static_cast<int>(hn::Lanes(hn::ScalableTag<float>()))) LightQueue<kLobe>(q, tt, false);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -89,6 +89,14 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
   return PackLevels(d, QuantizeLevel<kSrgb>(d, r), QuantizeLevel<kSrgb>(d, g), QuantizeLevel<kSrgb>(d, b));
 }
 
+// The same with the output curve chosen at run time: a branch per vector that goes the same
+// way all frame. The per-pixel Blinn-Phong kernels take it instead of being compiled twice
+// (shade/brdf_variants.h says why their variants are few).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE auto PackRGBA(D d, V r, V g, V b, bool srgb) {
+  return srgb ? PackRGBA<true>(d, r, g, b) : PackRGBA<false>(d, r, g, b);
+}
+
 // Walks one covered row span a vector at a time: depth test against the tile, then
 // shade(d, offsets, x) for vectors with a lane that passes (x: the vector's first pixel),
 // then colour and depth blended in registers and stored whole: the rows are the worker's own

@@ -14,11 +14,10 @@
 #include "fastshade/scene.h"
 #include "front/scene_geometry.h"
 #include "front/self_occlusion.h"
+#include "support/shared_models.h"
 
 namespace fastshade {
 namespace {
-
-const std::filesystem::path kModels = FASTSHADE_SHARED_MODELS;
 
 // An octahedron: closed, outward (counter-clockwise seen from outside), 6 vertices.
 Mesh octahedron() {
@@ -128,11 +127,13 @@ TEST(SelfOcclusionFrames, SharedMeshesFromSixSidesAreUnchanged) {
     const char* file;
     bool closed;  // the shared models' README: every edge on two faces
   };
-  for (const Case& m : {Case{"spot.obj", true}, Case{"horse.ply", true}, Case{"bunny.ply", false},
-                        Case{"dragon_11k.ply", false}, Case{"suzanne.obj", false}, Case{"fandisk.off", true}}) {
+  const Case cases[] = {{"spot.obj", true},       {"horse.ply", true},    {"bunny.ply", false},
+                        {"dragon_11k.ply", false}, {"suzanne.obj", false}, {"fandisk.off", true}};
+  for (const Case& m : cases) FASTSHADE_REQUIRE_SHARED_MODEL(m.file);
+  for (const Case& m : cases) {
     long long hidden = 0;
     for (const char* rotate : {"[0, 0, 0]", "[90, 0, 0]", "[-90, 0, 0]", "[0, 90, 0]", "[0, 180, 0]", "[0, -90, 0]"}) {
-      const Scene scene = parse_scene(mesh_scene((kModels / m.file).string(), rotate), m.file, ".");
+      const Scene scene = parse_scene(mesh_scene((testing::shared_models() / m.file).string(), rotate), m.file, ".");
       hidden += expect_same_image(scene, std::string(m.file) + " rotated " + rotate).triangles_hidden;
     }
     // Closed meshes and the bunny (holes underneath only) hide about half their faces.

@@ -1,4 +1,4 @@
-// Helpers for the io tests: the shared model folder, a scratch directory, expected counts.
+// Helpers for the io tests: a scratch directory, the shared models' expected counts.
 #pragma once
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 
 #include <unistd.h>
 
-namespace fastshade::testing {
+#include "support/shared_models.h"
 
-inline std::filesystem::path shared_models() { return FASTSHADE_SHARED_MODELS; }
+namespace fastshade::testing {
 
 // A fresh directory under the system temp dir, removed with its contents at the end.
 class ScratchDir {
@@ -91,10 +91,3 @@ inline constexpr ModelCounts kModels[] = {
 };
 
 }  // namespace fastshade::testing
-
-#define FASTSHADE_REQUIRE_SHARED_MODELS()                                          \
-  do {                                                                             \
-    if (!std::filesystem::is_directory(::fastshade::testing::shared_models())) {   \
-      GTEST_SKIP() << "no shared models at " << ::fastshade::testing::shared_models(); \
-    }                                                                              \
-  } while (0)

@@ -13,12 +13,12 @@
 #include "fastshade/error.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
+#include "support/shared_models.h"
 
 namespace fastshade {
 namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(FASTSHADE_SOURCE_DIR) / "scenes";
-const std::filesystem::path kModels = FASTSHADE_SHARED_MODELS;
 
 // The benchmark frame's lighting (bench/frame_bench.cpp), at a size the suite can afford.
 std::string mesh_scene_json(const std::string& mesh) {
@@ -74,8 +74,8 @@ class AutoOnSharedMesh : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(AutoOnSharedMesh, WithinOneLsbOfReferenceAtN10To1000) {
   const std::string mesh = GetParam();
-  if (!std::filesystem::exists(kModels / mesh)) GTEST_SKIP() << "no " << (kModels / mesh).string();
-  Scene scene = parse_scene(mesh_scene_json(mesh), mesh, kModels);
+  FASTSHADE_REQUIRE_SHARED_MODEL(mesh);
+  Scene scene = parse_scene(mesh_scene_json(mesh), mesh, testing::shared_models());
   for (double n : {10.0, 100.0, 1000.0}) {
     scene.materials[0].shininess = n;
     expect_auto_within_budget(scene, mesh + " n=" + std::to_string(int(n)));
