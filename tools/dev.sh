@@ -3,12 +3,13 @@
 # then either renders the embedded default scene or runs the whole test suite.
 #   bash tools/dev.sh render   -> out/default.png and a one-line summary
 #   bash tools/dev.sh test     -> every test through ctest
+#   bash tools/dev.sh sanitize -> every test, built with ASan + UBSan (no recovery) in build-asan/
 # Idempotent: nothing is installed or rebuilt that is already there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 mode=${1:-}
-case "$mode" in render|test) ;; *) echo "usage: bash tools/dev.sh render|test" >&2; exit 2 ;; esac
+case "$mode" in render|test|sanitize) ;; *) echo "usage: bash tools/dev.sh render|test|sanitize" >&2; exit 2 ;; esac
 
 packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev libopenmesh-dev
           libopenimageio-dev libhwy-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
@@ -18,6 +19,14 @@ packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev lib
 bash tools/ensure_packages.sh "${packages[@]}"
 
 jobs=$(nproc)
+if [ "$mode" = sanitize ]; then
+  # Sanitizers slow the suite about 3x; leaks are reported too (docs/FUZZING.md).
+  if [ ! -f build-asan/build.ninja ]; then
+    cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Release -DFASTSHADE_SANITIZE=ON -DFASTSHADE_BENCH=OFF >&2
+  fi
+  cmake --build build-asan -j "$jobs" >&2
+  exec ctest --test-dir build-asan --output-on-failure -j "$jobs"
+fi
 if [ ! -f build/build.ninja ]; then
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
 fi

@@ -104,6 +104,28 @@ std::uint64_t scan_numeric_body(const fs::path& path, std::string_view body,
   return count;
 }
 
+// OpenMesh reads a binary OFF face as its vertex count n, then n indices one at a time with
+// no end-of-file check (and, with the C prefix, three colour values): a count of 4e9 in a
+// small file loops 4e9 times and grows a vector to 16 GB. Every face's list must fit in the
+// bytes left after it, walked the way OpenMesh walks them.
+void check_off_binary_faces(const fs::path& path, std::string_view data, uint64_t at, uint32_t faces,
+                            bool colors) {
+  const uint64_t color_bytes = colors ? 12 : 0;
+  for (uint32_t f = 0; f < faces; ++f) {
+    uint32_t n = 0;
+    if (at > data.size() || !read_u32_le(data, static_cast<std::size_t>(at), n)) {
+      fail(path, "truncated: OFF BINARY face " + std::to_string(f) + " of " + std::to_string(faces) +
+                     " starts past the end of the file");
+    }
+    const uint64_t left = data.size() - at - 4;
+    if (uint64_t{n} * 4 + color_bytes > left) {
+      fail(path, "OFF BINARY face " + std::to_string(f) + " lists " + std::to_string(n) +
+                     " vertices but only " + std::to_string(left) + " bytes follow");
+    }
+    at += 4 + uint64_t{n} * 4 + color_bytes;
+  }
+}
+
 void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
   const std::string_view head = file.head();
   Cursor cur{head};
@@ -111,9 +133,9 @@ void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
   cur.next_line(first);
   // [ST][C][N][4][n]OFF [BINARY], as OpenMesh's reader accepts it.
   std::string_view magic = trim(first);
-  bool texcoords = false, normals = false;
+  bool texcoords = false, normals = false, colors = false;
   if (magic.substr(0, 2) == "ST") texcoords = true, magic.remove_prefix(2);
-  if (magic.substr(0, 1) == "C") magic.remove_prefix(1);
+  if (magic.substr(0, 1) == "C") colors = true, magic.remove_prefix(1);
   if (magic.substr(0, 1) == "N") normals = true, magic.remove_prefix(1);
   if (magic.substr(0, 1) == "4" || magic.substr(0, 1) == "n") {
     fail(path, "4OFF / nOFF (4-D or n-D vertices) is not supported");
@@ -138,6 +160,8 @@ void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
     const double needed = double(cur.pos) + 12.0 + double(nv) * double(4 * per_vertex) +
                           double(nf) * 16.0;
     if (needed > double(file.size())) fail_counts(path, nv, nf, file.size(), needed);
+    check_off_binary_faces(path, file.all(), cur.pos + 12 + uint64_t{nv} * 4 * (per_vertex + (colors ? 3 : 0)),
+                           nf, colors);
     out.declared_vertices = nv;
     out.declared_faces = nf;
     return;
@@ -274,6 +298,12 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
       }
     }
     if (e.name == "face") faces = e.count;
+    // A record of no properties takes no bytes, so no file size bounds the count; OpenMesh
+    // would reserve memory for all of them (100 M faces: 9.6 GB) and loop over each.
+    if (e.count > 0 && e.min_tokens == 0) {
+      fail(path, "the PLY element " + quote(e.name) + " declares " + std::to_string(e.count) +
+                     " records but no properties");
+    }
     min_bytes += double(e.count) * double(e.min_bytes);
     min_tokens += double(e.count) * double(e.min_tokens);
   }

@@ -194,6 +194,38 @@ TEST(LoadMeshErrors, PlyHeaderLyingAboutFaces) {
   expect_load_error(dir.write("liar_ascii.ply", ascii), "1000000000 faces but the file has");
 }
 
+// Found by fuzzing (fuzz/regressions/mesh_ply): a property line OpenMesh and we both skip
+// leaves the face element without properties, so no file size bounded its count.
+TEST(LoadMeshErrors, PlyElementWithoutProperties) {
+  ScratchDir dir;
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 100000000\n0property list uchar int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_load_error(dir.write("no_properties.ply", ply),
+                    "the PLY element 'face' declares 100000000 records but no properties");
+}
+
+// Found by fuzzing (fuzz/regressions/mesh_off): OpenMesh reads a binary face's indices with no
+// end-of-file check, so a vertex count of 4e9 looped 4e9 times.
+TEST(LoadMeshErrors, OffBinaryFaceListPastTheEnd) {
+  ScratchDir dir;
+  std::string bin = "OFF BINARY\n";
+  const uint32_t counts[3] = {3, 2, 0};
+  bin.append(reinterpret_cast<const char*>(counts), sizeof counts);
+  const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  bin.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const uint32_t faces[5] = {3, 0, 1, 2, 4000000000u};
+  bin.append(reinterpret_cast<const char*>(faces), sizeof faces);
+  bin.append(16, '\0');
+  expect_load_error(dir.write("long_face.off", bin), "OFF BINARY face 1 lists 4000000000 vertices but only 16 bytes follow");
+  // The same file with an honest second face loads.
+  std::string ok = bin.substr(0, bin.size() - 20);
+  const uint32_t second[4] = {3, 0, 2, 1};
+  ok.append(reinterpret_cast<const char*>(second), sizeof second);
+  EXPECT_EQ(load_mesh(dir.write("two_faces.off", ok)).triangles.size(), 2u);
+}
+
 TEST(LoadMeshErrors, TruncatedAsciiPly) {
   ScratchDir dir;
   // Within the byte bound (the numbers are long) but one face short.
