@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Coverage-guided fuzzing of every input reader (docs/FUZZING.md). Builds the libFuzzer
-# targets (clang, ASan + UBSan, no recovery) in build-fuzz/, then runs each for SECONDS
+# targets and the parser tests (clang, ASan + UBSan, no recovery) in build-fuzz/, runs the
+# tests (every fuzz seed and regression among them), then runs each fuzz target for SECONDS
 # (default 60), JOBS at a time (default 1), from its seeds: fuzz/corpus/TARGET, the shared models
 # of its format (../shared/models) and, for scenes, scenes/. Prints per target the executions,
 # libFuzzer's coverage (cov: edges, ft: features) and any finding; a finding's input is kept in
@@ -20,7 +21,9 @@ if [ ! -f build-fuzz/build.ninja ]; then
   CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DFASTSHADE_FUZZ=ON \
     -DFASTSHADE_BENCH=OFF >&2
 fi
-cmake --build build-fuzz -j "$(nproc)" --target fuzzers >&2
+cmake --build build-fuzz -j "$(nproc)" --target fuzzers fastshade_parser_tests >&2
+# The input parsers' tests and every seed and regression, under the same sanitizers.
+build-fuzz/fastshade_parser_tests --gtest_brief=1
 
 # A target's seeds: the repository's, then the shared models of its format (a fuzzer reads
 # only the first max_len bytes of each).

@@ -9,6 +9,7 @@
 //   whitespace character, so T tokens need >= 2*T - 1 bytes. An OFF vertex is >= 3 tokens
 //   (>= 6 bytes with its separator), an OFF face >= 4 ("3 0 1 2", >= 8 bytes), a PLY record
 //   one token per scalar, 1 per list count and 3 more for a face's vertex list.
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <string>
@@ -126,6 +127,81 @@ void check_off_binary_faces(const fs::path& path, std::string_view data, uint64_
   }
 }
 
+// The body's numbers one at a time, as a stream reads them (`>>` crosses lines), with
+// getline's "the rest of this line".
+class TokenWalk {
+ public:
+  explicit TokenWalk(std::string_view body) : lines_{body} {}
+  bool next(std::string_view& tok) {
+    while (rest_.empty()) {
+      if (!lines_.next_line(rest_)) return false;
+      rest_ = trim(rest_);
+    }
+    std::size_t end = 0;
+    while (end < rest_.size() && !is_space(rest_[end])) ++end;
+    tok = rest_.substr(0, end);
+    rest_ = trim(rest_.substr(end));
+    ++consumed_;
+    return true;
+  }
+  void skip_rest_of_line() {
+    for_each_token(rest_, [&](std::string_view) { return ++consumed_, true; });
+    rest_ = {};
+  }
+  uint64_t consumed() const { return consumed_; }
+  std::size_t line_number() const { return lines_.line_number; }
+
+ private:
+  Cursor lines_;
+  std::string_view rest_;
+  uint64_t consumed_ = 0;
+};
+
+// The same for an ASCII OFF, walked as OpenMesh reads it: the three counts, then per vertex its
+// 3 (with normals 6) numbers and the rest of that line (colours, texture coordinates), then per
+// face its vertex count n and n indices read as `unsigned` (with colours, the rest of the line).
+// A count or index that is not a whole number ("-1" reads as 4294967295, "1.5" fails the stream
+// and leaves the last count standing) or n past the numbers left is refused: OpenMesh would
+// loop n times. `total`: the body's numbers.
+void check_off_ascii_faces(const fs::path& path, std::string_view body, uint64_t total, uint64_t vertices,
+                           bool normals, uint64_t faces, bool colors) {
+  TokenWalk walk{body};
+  std::string_view tok;
+  for (int i = 0; i < 3; ++i)
+    if (!walk.next(tok)) return;  // the truncation checks above speak for these
+  for (uint64_t v = 0; v < vertices; ++v) {
+    for (int i = 0; i < (normals ? 6 : 3); ++i)
+      if (!walk.next(tok)) return;
+    walk.skip_rest_of_line();
+  }
+  // An index may be negative (it reads as a huge one, which the range check refuses later); a
+  // count may not.
+  const auto whole = [&](std::string_view t, uint64_t face, const char* what, bool sign_allowed) {
+    const std::string_view digits = sign_allowed && t.starts_with('-') ? t.substr(1) : t;
+    int64_t value = -1;
+    if (digits.empty() || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
+        !parse_integer(t, value) || value > int64_t{UINT32_MAX} || value < -int64_t{UINT32_MAX}) {
+      fail(path, "line " + std::to_string(1 + walk.line_number()) + ": face " + std::to_string(face) + "'s " + what +
+                     " is " + quote(t) + ", not a whole number");
+    }
+    return uint64_t(value);
+  };
+  for (uint64_t f = 0; f < faces; ++f) {
+    if (!walk.next(tok)) return;
+    const uint64_t n = whole(tok, f, "vertex count", false);
+    if (n > total - walk.consumed()) {
+      fail(path, "line " + std::to_string(1 + walk.line_number()) + ": face " + std::to_string(f) + " lists " +
+                     std::to_string(n) + " vertices but only " + std::to_string(total - walk.consumed()) +
+                     " numbers follow");
+    }
+    for (uint64_t j = 0; j < n; ++j) {
+      if (!walk.next(tok)) return;
+      whole(tok, f, "vertex index", true);
+    }
+    if (colors) walk.skip_rest_of_line();
+  }
+}
+
 void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
   const std::string_view head = file.head();
   Cursor cur{head};
@@ -199,6 +275,7 @@ void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
                    std::to_string(uint64_t(tokens_needed)) + " numbers, but the file has " +
                    std::to_string(tokens_found));
   }
+  check_off_ascii_faces(path, body, tokens_found, counts[0], normals, counts[1], colors);
   out.declared_vertices = counts[0];
   out.declared_faces = counts[1];
 }
@@ -245,6 +322,12 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
       if (tok.size() < 2 || (tok[1] != "ascii" && tok[1] != "binary_little_endian" &&
                              tok[1] != "binary_big_endian")) {
         fail(path, at_line() + "unknown PLY format " + quote(line));
+      }
+      // OpenMesh reads the version with `>> float`; one that is not a number leaves its stream
+      // failed and its header loop spinning forever.
+      double version = 0.0;
+      if (tok.size() != 3 || parse_number(tok[2], version) != NumberStatus::Ok) {
+        fail(path, at_line() + "expected 'format " + std::string(tok[1]) + " 1.0', found " + quote(line));
       }
       format = std::string(tok[1]);
     } else if (tok[0] == "element") {

@@ -226,6 +226,27 @@ TEST(LoadMeshErrors, OffBinaryFaceListPastTheEnd) {
   EXPECT_EQ(load_mesh(dir.write("two_faces.off", ok)).triangles.size(), 2u);
 }
 
+// Found by fuzzing (fuzz/regressions): OpenMesh reads an ASCII OFF face's count as `unsigned`;
+// "-1" became 4294967295 and "1.5" failed its stream with the last count left standing, and it
+// then looped that many times. A PLY format version that is not a number spun its header loop.
+TEST(LoadMeshErrors, OffAsciiFaceCountsAndPlyVersionMustBeNumbers) {
+  ScratchDir dir;
+  const std::string verts = "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n";
+  expect_load_error(dir.write("fraction.off", verts + "3 0 1 2\n1.5 0 1 2\n"),
+                    "line 7: face 1's vertex count is '1.5', not a whole number");
+  expect_load_error(dir.write("negative.off", verts + "-1 0 1 2\n3 0 1 2\n"),
+                    "face 0's vertex count is '-1', not a whole number");
+  expect_load_error(dir.write("long.off", verts + "3 0 1 2\n9 0 1 2\n"),
+                    "face 1 lists 9 vertices but only 3 numbers follow");
+  // Whatever follows a vertex's three numbers on its line is skipped, as OpenMesh does.
+  EXPECT_EQ(load_mesh(dir.write("trailing.off", "OFF\n3 1 0\n0 0 0 7 7\n1 0 0\n0 1 0 1.5\n3 0 1 2\n"))
+                .triangles.size(),
+            1u);
+  const std::string ply = "ply\nformat ascii x.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  expect_load_error(dir.write("version.ply", ply), "line 2: expected 'format ascii 1.0', found 'format ascii x.0'");
+}
+
 TEST(LoadMeshErrors, TruncatedAsciiPly) {
   ScratchDir dir;
   // Within the byte bound (the numbers are long) but one face short.
