@@ -280,6 +280,73 @@ void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
   out.declared_faces = counts[1];
 }
 
+struct PlyProperty {
+  bool list = false;
+  uint64_t count_size = 0;  // a list's count, in bytes
+  uint64_t size = 0;        // a scalar's, or a list item's, in bytes
+};
+struct PlyElement {
+  std::string name;
+  uint64_t count = 0;
+  uint64_t min_bytes = 0;   // binary
+  uint64_t min_tokens = 0;  // ASCII
+  bool has_xyz[3] = {false, false, false};
+  std::vector<PlyProperty> properties;
+};
+
+// OpenMesh reads a list's count and then that many items with no end-of-file check: a count of
+// 2^31 (or, in ASCII, one that overflows and fails the stream) loops as many times and grows a
+// vector to gigabytes. Every list must fit in what follows it, walked record by record.
+void check_ply_ascii_lists(const fs::path& path, std::string_view body, std::size_t header_lines, uint64_t total,
+                           const std::vector<PlyElement>& elements) {
+  TokenWalk walk{body};
+  std::string_view tok;
+  for (const PlyElement& e : elements) {
+    for (uint64_t r = 0; r < e.count; ++r) {
+      for (const PlyProperty& p : e.properties) {
+        if (!walk.next(tok)) return;  // the truncation check speaks for this
+        if (!p.list) continue;
+        int64_t n = -1;
+        if (!std::all_of(tok.begin(), tok.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
+            !parse_integer(tok, n) || uint64_t(n) > total - walk.consumed()) {
+          fail(path, "line " + std::to_string(header_lines + walk.line_number()) + ": " + e.name + " " + std::to_string(r) +
+                         " has a list of " + quote(tok) + " items, but only " +
+                         std::to_string(total - walk.consumed()) + " numbers follow");
+        }
+        for (int64_t j = 0; j < n; ++j)
+          if (!walk.next(tok)) return;
+      }
+    }
+  }
+}
+
+void check_ply_binary_lists(const fs::path& path, std::string_view body, bool big_endian,
+                            const std::vector<PlyElement>& elements) {
+  uint64_t at = 0;
+  for (const PlyElement& e : elements) {
+    for (uint64_t r = 0; r < e.count; ++r) {
+      for (const PlyProperty& p : e.properties) {
+        if (!p.list) {
+          at += p.size;
+          continue;
+        }
+        if (at + p.count_size > body.size()) return;  // the size check speaks for this
+        uint64_t n = 0;
+        for (uint64_t i = 0; i < p.count_size; ++i) {
+          const auto byte = static_cast<unsigned char>(body[at + (big_endian ? i : p.count_size - 1 - i)]);
+          n = n << 8 | byte;
+        }
+        at += p.count_size;
+        if (n > (body.size() - at) / p.size) {
+          fail(path, e.name + " " + std::to_string(r) + " has a list of " + std::to_string(n) + " items, but only " +
+                         std::to_string(body.size() - at) + " bytes follow");
+        }
+        at += n * p.size;
+      }
+    }
+  }
+}
+
 void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
   const std::string_view head = file.head();
   Cursor cur{head};
@@ -289,14 +356,7 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
     fail(path, "not a PLY file: the first line is " + quote(line) + ", expected ply");
   }
 
-  struct Element {
-    std::string name;
-    uint64_t count = 0;
-    uint64_t min_bytes = 0;   // binary
-    uint64_t min_tokens = 0;  // ASCII
-    bool has_xyz[3] = {false, false, false};
-  };
-  std::vector<Element> elements;
+  std::vector<PlyElement> elements;
   std::string format;
   bool ended = false;
   const auto scalar_size = [&](std::string_view type) -> uint64_t {
@@ -338,7 +398,7 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
       elements.push_back({std::string(tok[1]), static_cast<uint64_t>(count)});
     } else if (tok[0] == "property") {
       if (elements.empty()) fail(path, at_line() + "property before any element");
-      Element& e = elements.back();
+      PlyElement& e = elements.back();
       if (tok.size() >= 2 && tok[1] == "list") {
         if (tok.size() != 5) {
           fail(path, at_line() + "expected 'property list COUNT_TYPE TYPE NAME', found " +
@@ -350,12 +410,14 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
             e.name == "face" && (tok[4] == "vertex_indices" || tok[4] == "vertex_index");
         e.min_bytes += count_size + (face_vertices ? 3 * item_size : 0);
         e.min_tokens += 1 + (face_vertices ? 3 : 0);
+        e.properties.push_back({true, count_size, item_size});
       } else {
         if (tok.size() != 3) {
           fail(path, at_line() + "expected 'property TYPE NAME', found " + quote(line));
         }
         e.min_bytes += scalar_size(tok[1]);
         e.min_tokens += 1;
+        e.properties.push_back({false, 0, scalar_size(tok[1])});
         for (int axis = 0; axis < 3; ++axis) {
           if (tok[2] == std::string_view("xyz" + axis, 1)) e.has_xyz[axis] = true;
         }
@@ -373,7 +435,7 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
 
   uint64_t vertices = 0, faces = 0;
   double min_bytes = 0.0, min_tokens = 0.0;
-  for (const Element& e : elements) {
+  for (const PlyElement& e : elements) {
     if (e.name == "vertex") {
       vertices = e.count;
       if (!(e.has_xyz[0] && e.has_xyz[1] && e.has_xyz[2])) {
@@ -404,8 +466,11 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
                      std::to_string(uint64_t(min_tokens)) + " numbers, but the file has " +
                      std::to_string(found));
     }
-  } else if (min_bytes > body_bytes) {
-    fail_counts(path, vertices, faces, file.size(), double(cur.pos) + min_bytes);
+    check_ply_ascii_lists(path, text.substr(cur.pos), cur.line_number, found, elements);
+  } else {
+    if (min_bytes > body_bytes) fail_counts(path, vertices, faces, file.size(), double(cur.pos) + min_bytes);
+    const std::size_t body_at = cur.pos;
+    check_ply_binary_lists(path, file.all().substr(body_at), format == "binary_big_endian", elements);
   }
   out.declared_vertices = vertices;
   out.declared_faces = faces;

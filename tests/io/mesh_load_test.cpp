@@ -247,6 +247,23 @@ TEST(LoadMeshErrors, OffAsciiFaceCountsAndPlyVersionMustBeNumbers) {
   expect_load_error(dir.write("version.ply", ply), "line 2: expected 'format ascii 1.0', found 'format ascii x.0'");
 }
 
+// Found by fuzzing (fuzz/regressions/mesh_ply): a list count OpenMesh believed and looped on.
+TEST(LoadMeshErrors, PlyListLongerThanTheFile) {
+  ScratchDir dir;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  expect_load_error(dir.write("overflow.ply", header + "0 0 0\n1 0 0\n0 1 0\n131111111111111111111111 0 2 1\n"),
+                    "line 13: face 0 has a list of '131111111111111111111111' items, but only 3 numbers follow");
+  expect_load_error(dir.write("long.ply", header + "0 0 0\n1 0 0\n0 1 0\n7 0 2 1\n"),
+                    "face 0 has a list of '7' items, but only 3 numbers follow");
+  std::string bin = "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
+  bin.append(36, '\0');
+  bin.append("\x7F\xFF\xFF\xFF", 4);  // 2^31 - 1 indices
+  bin.append(12, '\0');
+  expect_load_error(dir.write("long_bin.ply", bin), "face 0 has a list of 2147483647 items, but only 12 bytes follow");
+}
+
 TEST(LoadMeshErrors, TruncatedAsciiPly) {
   ScratchDir dir;
   // Within the byte bound (the numbers are long) but one face short.
