@@ -375,6 +375,7 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
     if (tok.empty()) continue;
     const auto at_line = [&] { return "line " + std::to_string(cur.line_number) + ": "; };
     if (tok[0] == "end_header") {
+      if (tok.size() != 1) fail(path, at_line() + "expected 'end_header' alone, found " + quote(line));
       ended = true;
       break;
     }
@@ -422,8 +423,12 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
           if (tok[2] == std::string_view("xyz" + axis, 1)) e.has_xyz[axis] = true;
         }
       }
+    } else if (tok[0] != "comment" && tok[0] != "obj_info") {
+      // OpenMesh reads the header as a stream of words: an unknown one (or a line of the wrong
+      // length) puts its reading out of step with the lines, and one that never meets
+      // end_header loops forever at the end of the file.
+      fail(path, at_line() + "unknown PLY header line " + quote(line));
     }
-    // comment, obj_info and anything else: OpenMesh skips them, and so do we.
   }
   if (!ended) {
     check_no_nul(path, head);

@@ -194,13 +194,14 @@ TEST(LoadMeshErrors, PlyHeaderLyingAboutFaces) {
   expect_load_error(dir.write("liar_ascii.ply", ascii), "1000000000 faces but the file has");
 }
 
-// Found by fuzzing (fuzz/regressions/mesh_ply): a property line OpenMesh and we both skip
-// leaves the face element without properties, so no file size bounded its count.
+// Found by fuzzing (fuzz/regressions/mesh_ply, where a garbled property line left the face
+// element without properties): records of no properties take no bytes, so no file size
+// bounded the count.
 TEST(LoadMeshErrors, PlyElementWithoutProperties) {
   ScratchDir dir;
   const std::string ply =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 100000000\n0property list uchar int vertex_indices\n"
+      "property float z\nelement face 100000000\n"
       "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   expect_load_error(dir.write("no_properties.ply", ply),
                     "the PLY element 'face' declares 100000000 records but no properties");
@@ -228,8 +229,9 @@ TEST(LoadMeshErrors, OffBinaryFaceListPastTheEnd) {
 
 // Found by fuzzing (fuzz/regressions): OpenMesh reads an ASCII OFF face's count as `unsigned`;
 // "-1" became 4294967295 and "1.5" failed its stream with the last count left standing, and it
-// then looped that many times. A PLY format version that is not a number spun its header loop.
-TEST(LoadMeshErrors, OffAsciiFaceCountsAndPlyVersionMustBeNumbers) {
+// then looped that many times. A PLY format version that is not a number, or an unknown header
+// word, spun OpenMesh's header loop forever.
+TEST(LoadMeshErrors, OffAsciiFaceCountsAndPlyHeaderWords) {
   ScratchDir dir;
   const std::string verts = "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n";
   expect_load_error(dir.write("fraction.off", verts + "3 0 1 2\n1.5 0 1 2\n"),
@@ -245,6 +247,10 @@ TEST(LoadMeshErrors, OffAsciiFaceCountsAndPlyVersionMustBeNumbers) {
   const std::string ply = "ply\nformat ascii x.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                           "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
   expect_load_error(dir.write("version.ply", ply), "line 2: expected 'format ascii 1.0', found 'format ascii x.0'");
+  // An unknown header word put OpenMesh's word-by-word reading out of step: it never met end_header.
+  const std::string unknown = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nalement face 1\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  expect_load_error(dir.write("unknown.ply", unknown), "line 7: unknown PLY header line 'alement face 1'");
 }
 
 // Found by fuzzing (fuzz/regressions/mesh_ply): a list count OpenMesh believed and looped on.
