@@ -384,10 +384,10 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
                              tok[1] != "binary_big_endian")) {
         fail(path, at_line() + "unknown PLY format " + quote(line));
       }
-      // OpenMesh reads the version with `>> float`; one that is not a number leaves its stream
-      // failed and its header loop spinning forever.
-      double version = 0.0;
-      if (tok.size() != 3 || parse_number(tok[2], version) != NumberStatus::Ok) {
+      // OpenMesh reads the version with `>> float`; one that is not a float (a word, or a number
+      // past float's range) leaves its stream failed and its header loop spinning forever. The
+      // format has one version: 1.0.
+      if (tok.size() != 3 || tok[2] != "1.0") {
         fail(path, at_line() + "expected 'format " + std::string(tok[1]) + " 1.0', found " + quote(line));
       }
       format = std::string(tok[1]);

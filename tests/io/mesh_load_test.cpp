@@ -247,6 +247,9 @@ TEST(LoadMeshErrors, OffAsciiFaceCountsAndPlyHeaderWords) {
   const std::string ply = "ply\nformat ascii x.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                           "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
   expect_load_error(dir.write("version.ply", ply), "line 2: expected 'format ascii 1.0', found 'format ascii x.0'");
+  std::string huge = ply;
+  huge.replace(huge.find("x.0"), 3, "5" + std::string(60, '5') + ".0");  // no float holds it
+  expect_load_error(dir.write("huge_version.ply", huge), "line 2: expected 'format ascii 1.0'");
   // An unknown header word put OpenMesh's word-by-word reading out of step: it never met end_header.
   const std::string unknown = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                               "property float z\nalement face 1\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
