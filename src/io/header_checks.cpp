@@ -284,7 +284,17 @@ struct PlyProperty {
   bool list = false;
   uint64_t count_size = 0;  // a list's count, in bytes
   uint64_t size = 0;        // a scalar's, or a list item's, in bytes
+  bool integer = false;     // a scalar of an integer type
+  std::string name;
 };
+
+// The vertex properties OpenMesh reads as floats: in a binary file it converts only float and
+// double to them, and for any other type prints lines of its own to stderr and fails.
+bool read_as_float(std::string_view vertex_property) {
+  for (std::string_view name : {"x", "y", "z", "nx", "ny", "nz", "u", "v", "s", "t", "texture_u", "texture_v"})
+    if (vertex_property == name) return true;
+  return false;
+}
 struct PlyElement {
   std::string name;
   uint64_t count = 0;
@@ -418,7 +428,8 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
         }
         e.min_bytes += scalar_size(tok[1]);
         e.min_tokens += 1;
-        e.properties.push_back({false, 0, scalar_size(tok[1])});
+        const bool integer = tok[1] != "float" && tok[1] != "float32" && tok[1] != "double" && tok[1] != "float64";
+        e.properties.push_back({false, 0, scalar_size(tok[1]), integer, std::string(tok[2])});
         for (int axis = 0; axis < 3; ++axis) {
           if (tok[2] == std::string_view("xyz" + axis, 1)) e.has_xyz[axis] = true;
         }
@@ -438,6 +449,14 @@ void check_ply(const fs::path& path, FileBytes& file, Precheck& out) {
   check_no_nul(path, head.substr(0, cur.pos));
   if (format.empty()) fail(path, "PLY header has no format line");
 
+  if (format != "ascii") {
+    for (const PlyElement& e : elements)
+      for (const PlyProperty& p : e.properties)
+        if (e.name == "vertex" && !p.list && p.integer && read_as_float(p.name)) {
+          fail(path, "the binary PLY vertex property " + quote(p.name) +
+                         " is an integer type; OpenMesh reads it only as float or double");
+        }
+  }
   uint64_t vertices = 0, faces = 0;
   double min_bytes = 0.0, min_tokens = 0.0;
   for (const PlyElement& e : elements) {

@@ -273,6 +273,23 @@ TEST(LoadMeshErrors, PlyListLongerThanTheFile) {
   expect_load_error(dir.write("long_bin.ply", bin), "face 0 has a list of 2147483647 items, but only 12 bytes follow");
 }
 
+// Found by fuzzing: OpenMesh reads a binary PLY's coordinates, normals and texture
+// coordinates only from float or double; for an integer type it printed four lines of its own
+// to stderr before failing. ASCII files convert any type.
+TEST(LoadMeshErrors, BinaryPlyIntegerCoordinatesAreRefusedInOneLine) {
+  ScratchDir dir;
+  std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty uint32 x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  bin.append(36, '\0');
+  bin.append("\x03\x00\x00\x00\x00\x01\x00\x00\x00\x02\x00\x00\x00", 13);
+  expect_load_error(dir.write("int_x.ply", bin),
+                    "the binary PLY vertex property 'x' is an integer type; OpenMesh reads it only as float or double");
+  const std::string ascii = "ply\nformat ascii 1.0\nelement vertex 3\nproperty uint32 x\nproperty float y\n"
+                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_EQ(load_mesh(dir.write("int_x_ascii.ply", ascii)).triangles.size(), 1u);
+}
+
 TEST(LoadMeshErrors, TruncatedAsciiPly) {
   ScratchDir dir;
   // Within the byte bound (the numbers are long) but one face short.
