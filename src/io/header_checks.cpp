@@ -106,12 +106,11 @@ std::uint64_t scan_numeric_body(const fs::path& path, std::string_view body,
 }
 
 // OpenMesh reads a binary OFF face as its vertex count n, then n indices one at a time with
-// no end-of-file check (and, with the C prefix, three colour values): a count of 4e9 in a
-// small file loops 4e9 times and grows a vector to 16 GB. Every face's list must fit in the
-// bytes left after it, walked the way OpenMesh walks them.
-void check_off_binary_faces(const fs::path& path, std::string_view data, uint64_t at, uint32_t faces,
-                            bool colors) {
-  const uint64_t color_bytes = colors ? 12 : 0;
+// no end-of-file check: a count of 4e9 in a small file loops 4e9 times and grows a vector to
+// 16 GB. Every face's list must fit in the bytes left after it, walked the way OpenMesh walks
+// them (a face's colour, with the C prefix, is read only when the caller asks for face colours,
+// and load_mesh does not).
+void check_off_binary_faces(const fs::path& path, std::string_view data, uint64_t at, uint32_t faces) {
   for (uint32_t f = 0; f < faces; ++f) {
     uint32_t n = 0;
     if (at > data.size() || !read_u32_le(data, static_cast<std::size_t>(at), n)) {
@@ -119,11 +118,11 @@ void check_off_binary_faces(const fs::path& path, std::string_view data, uint64_
                      " starts past the end of the file");
     }
     const uint64_t left = data.size() - at - 4;
-    if (uint64_t{n} * 4 + color_bytes > left) {
+    if (uint64_t{n} * 4 > left) {
       fail(path, "OFF BINARY face " + std::to_string(f) + " lists " + std::to_string(n) +
                      " vertices but only " + std::to_string(left) + " bytes follow");
     }
-    at += 4 + uint64_t{n} * 4 + color_bytes;
+    at += 4 + uint64_t{n} * 4;
   }
 }
 
@@ -236,8 +235,8 @@ void check_off(const fs::path& path, FileBytes& file, Precheck& out) {
     const double needed = double(cur.pos) + 12.0 + double(nv) * double(4 * per_vertex) +
                           double(nf) * 16.0;
     if (needed > double(file.size())) fail_counts(path, nv, nf, file.size(), needed);
-    check_off_binary_faces(path, file.all(), cur.pos + 12 + uint64_t{nv} * 4 * (per_vertex + (colors ? 3 : 0)),
-                           nf, colors);
+    // A vertex's colour (C prefix) is three 4-byte values, always read.
+    check_off_binary_faces(path, file.all(), cur.pos + 12 + uint64_t{nv} * 4 * (per_vertex + (colors ? 3 : 0)), nf);
     out.declared_vertices = nv;
     out.declared_faces = nf;
     return;

@@ -220,6 +220,19 @@ TEST(LoadMeshErrors, OffBinaryFaceListPastTheEnd) {
   bin.append(reinterpret_cast<const char*>(faces), sizeof faces);
   bin.append(16, '\0');
   expect_load_error(dir.write("long_face.off", bin), "OFF BINARY face 1 lists 4000000000 vertices but only 16 bytes follow");
+  // With the C prefix each vertex carries three 4-byte colour values; faces carry none that
+  // load_mesh reads.
+  std::string colored = "COFF BINARY\n";
+  const uint32_t one_face[3] = {3, 1, 0};
+  colored.append(reinterpret_cast<const char*>(one_face), sizeof one_face);
+  for (int v = 0; v < 3; ++v) {
+    const float p[3] = {float(v == 1), float(v == 2), 0};
+    const uint32_t rgb[3] = {255, 128, 0};
+    colored.append(reinterpret_cast<const char*>(p), sizeof p).append(reinterpret_cast<const char*>(rgb), sizeof rgb);
+  }
+  const uint32_t tri[4] = {3, 0, 1, 2};
+  colored.append(reinterpret_cast<const char*>(tri), sizeof tri);
+  EXPECT_EQ(load_mesh(dir.write("colored.off", colored)).triangles.size(), 1u);
   // The same file with an honest second face loads.
   std::string ok = bin.substr(0, bin.size() - 20);
   const uint32_t second[4] = {3, 0, 2, 1};
