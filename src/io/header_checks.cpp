@@ -126,6 +126,12 @@ void check_off_binary_faces(const fs::path& path, std::string_view data, uint64_
   }
 }
 
+// Whether the token is a plain run of decimal digits (no sign, point or exponent): what
+// OpenMesh's `>> unsigned` reads whole.
+bool all_digits(std::string_view tok) {
+  return !tok.empty() && std::all_of(tok.begin(), tok.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // The body's numbers one at a time, as a stream reads them (`>>` crosses lines), with
 // getline's "the rest of this line".
 class TokenWalk {
@@ -178,7 +184,7 @@ void check_off_ascii_faces(const fs::path& path, std::string_view body, uint64_t
   const auto whole = [&](std::string_view t, uint64_t face, const char* what, bool sign_allowed) {
     const std::string_view digits = sign_allowed && t.starts_with('-') ? t.substr(1) : t;
     int64_t value = -1;
-    if (digits.empty() || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
+    if (!all_digits(digits) ||
         !parse_integer(t, value) || value > int64_t{UINT32_MAX} || value < -int64_t{UINT32_MAX}) {
       fail(path, "line " + std::to_string(1 + walk.line_number()) + ": face " + std::to_string(face) + "'s " + what +
                      " is " + quote(t) + ", not a whole number");
@@ -316,7 +322,7 @@ void check_ply_ascii_lists(const fs::path& path, std::string_view body, std::siz
         if (!walk.next(tok)) return;  // the truncation check speaks for this
         if (!p.list) continue;
         int64_t n = -1;
-        if (!std::all_of(tok.begin(), tok.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
+        if (!all_digits(tok) ||
             !parse_integer(tok, n) || uint64_t(n) > total - walk.consumed()) {
           fail(path, "line " + std::to_string(header_lines + walk.line_number()) + ": " + e.name + " " + std::to_string(r) +
                          " has a list of " + quote(tok) + " items, but only " +
