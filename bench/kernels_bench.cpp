@@ -7,7 +7,7 @@
 
 #include "exec/isa.h"
 #include "frame/edge_function.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 #include "shade/span_kernels.h"
 
 namespace {

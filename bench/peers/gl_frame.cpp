@@ -9,7 +9,7 @@
 
 #include "front/scene_geometry.h"
 #include "front/vertex_stage.h"
-#include "shade/lighting.h"
+#include "light/lighting.h"
 #include "shaders.h"
 
 namespace peer {

@@ -4,7 +4,7 @@ namespace peer {
 
 namespace {
 
-// Blinn-Phong as src/shade/lighting.h has it: view space, ambient added as given, specular
+// Blinn-Phong as src/light/lighting.h has it: view space, ambient added as given, specular
 // not gated by N.L, max(N.H, 0)^n with N.H clamped to 1 first. The infinite viewer's half
 // vectors come from fastshade's own ShadeConstants (u_h_view), zero for a light straight
 // behind the viewer; a local viewer's are normalize(L + V), zero when L + V is.

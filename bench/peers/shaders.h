@@ -1,4 +1,4 @@
-// GLSL for fastshade's colour model (docs/scene-format.md, "Colour model"; src/shade/lighting.h),
+// GLSL for fastshade's colour model (docs/scene-format.md, "Colour model"; src/light/lighting.h),
 // written as a GL application would, one program per variant so that llvmpipe compiles no
 // branch the frame does not take.
 #pragma once

@@ -7,7 +7,7 @@
 
 #include "app/commands.h"
 #include "exec/isa.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 
 namespace fastshade {
 

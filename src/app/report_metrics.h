@@ -12,7 +12,7 @@ struct ErrorMetrics {
   long long nan_suspect_channels = 0;  // see nan_suspect_channels()
 };
 
-// The renderer writes 8 bits and its quantiser turns a NaN into 0 (shade/lighting.h,
+// The renderer writes 8 bits and its quantiser turns a NaN into 0 (light/lighting.h,
 // shade/span_loop-inl.h), so a NaN cannot be counted in the image itself. What can be counted
 // is every place one could have gone: channels that are 0 in `image` where `reference` is at
 // least 2 LSB (a zeroed channel of 0 or 1 LSB is within rounding and invisible). The count is

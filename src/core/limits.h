@@ -102,7 +102,7 @@ inline constexpr int kBinPlanTiles = 256;
 // in lanes, plus lighting for gouraud; dragon_871k, measured), so a block is 20-60 us: far
 // above the cost of handing it out, and a 35k-vertex mesh still makes 9 blocks.
 inline constexpr int kVerticesPerBlock = 4096;
-// Vertices lit together in SIMD lanes (shade/vertex_light.h): their normals and positions wait
+// Vertices lit together in SIMD lanes (light/vertex_light.h): their normals and positions wait
 // in two local arrays of this many (6 KB, in L1), and the call and its tail cost are spread
 // over 16 vectors at 16 lanes.
 inline constexpr int kVertexLightBatch = 256;

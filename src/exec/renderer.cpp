@@ -22,6 +22,7 @@
 #include "front/self_occlusion.h"
 #include "front/triangle_setup.h"
 #include "front/vertex_stage.h"
+#include "light/brdf.h"
 #include "shade/method.h"
 #include "shade/normal_blocks.h"
 

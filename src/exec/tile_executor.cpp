@@ -11,7 +11,7 @@
 #include "core/force_inline.h"
 #include "exec/frame_profile.h"
 #include "exec/tile_io.h"
-#include "shade/lighting.h"
+#include "light/lighting.h"
 #include "shade/pixel_queue.h"
 
 namespace fastshade {

@@ -4,11 +4,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "shade/brdf.h"
-#include "shade/normal_blocks_mode.h"
+#include "frame/brdf_params.h"
 
 namespace fastshade {
 
+// How per-pixel Phong gets its unit normals (--normals; shade/normal_blocks.h): normalised at
+// every pixel, or in blocks within the error budget, or rotated at equal angles.
+enum class SpanNormals { Normalize, Adaptive, EqualAngle };
 
 struct LightView {
   glm::vec3 l_view;    // unit direction toward the light

@@ -8,12 +8,9 @@
 #include <vector>
 
 #include "frame/frame.h"
+#include "frame/method_needs.h"
 
 namespace fastshade {
-
-// Which triangles of a frame draw hybrid segments: none, all (`hybrid`), or those on the
-// specular path (`auto` with --spec-method hybrid).
-enum class SegmentSteps : uint8_t { None, All, SpecularPath };
 
 // Whether the hybrid kernel draws this set-up triangle in segments: wide enough (narrower
 // ones are drawn per pixel, classify/segment_step.h kHybridMinWidthPx) and, for SpecularPath,

@@ -10,7 +10,8 @@
 
 #include "core/limits.h"
 #include "front/vertex_transform.h"
-#include "shade/vertex_light.h"
+#include "light/brdf.h"
+#include "light/vertex_light.h"
 
 namespace fastshade {
 

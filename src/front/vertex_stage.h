@@ -7,15 +7,11 @@
 #include <glm/vec4.hpp>
 
 #include "frame/frame.h"
+#include "frame/method_needs.h"
 #include "front/projection.h"
 #include "front/scene_geometry.h"
 
 namespace fastshade {
-
-struct AttrNeeds {  // which attribute arrays a method reads (shade/method.h decides)
-  bool normal = false, color = false, position = false;
-  bool diffuse_color = false;  // the vertex colour without its specular term (`auto`'s Gouraud)
-};
 
 struct ViewTransform {
   glm::mat4 view{1.0f}, proj{1.0f};

@@ -10,7 +10,7 @@
 #include <hwy/highway.h>
 
 #include "shade/diffuse_quotient.h"
-#include "shade/fast_math-inl.h"
+#include "light/fast_math-inl.h"
 #include "shade/phong_color-inl.h"
 #include "shade/span_loop-inl.h"
 

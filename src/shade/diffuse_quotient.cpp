@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "shade/fast_math.h"
+#include "light/fast_math.h"
 
 namespace fastshade {
 

@@ -9,7 +9,7 @@
 
 #include <hwy/highway.h>
 
-#include "shade/lighting.h"
+#include "light/lighting.h"
 #include "shade/methods.h"
 #include "shade/planes_over_w-inl.h"
 #include "shade/span_loop-inl.h"

@@ -10,7 +10,7 @@
 
 #include <hwy/highway.h>
 
-#include "shade/brdf_variants.h"
+#include "light/brdf_variants.h"
 #include "classify/segment_step.h"
 #include "shade/methods.h"
 #include "shade/phong-inl.h"

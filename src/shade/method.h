@@ -9,8 +9,7 @@
 
 #include "fastshade/render.h"
 #include "frame/frame.h"
-#include "front/segment_steps.h"
-#include "front/vertex_stage.h"
+#include "frame/method_needs.h"
 #include "raster/spans.h"
 
 namespace fastshade {
@@ -56,7 +55,7 @@ struct Method {
   std::string (*refuse)(const RenderOptions& options);
   // Whether the front end classifies triangles into shading paths for this method.
   bool classifies;
-  // Which triangles the front end gives a hybrid segment length (front/segment_steps.h).
+  // Which triangles the front end gives a hybrid segment length (frame/method_needs.h).
   SegmentSteps (*segment_steps)(const RenderOptions& options);
 };
 

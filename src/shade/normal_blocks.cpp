@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "fastshade/error.h"
-#include "shade/fast_math.h"
+#include "light/fast_math.h"
 
 namespace fastshade {
 

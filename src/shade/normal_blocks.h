@@ -23,7 +23,7 @@
 #include <string_view>
 
 #include "core/limits.h"
-#include "shade/normal_blocks_mode.h"
+#include "frame/shade_constants.h"
 #include "shade/span_kernels.h"
 
 namespace fastshade {

@@ -7,7 +7,7 @@
 
 #include <hwy/highway.h>
 
-#include "shade/brdf_variants.h"
+#include "light/brdf_variants.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/methods.h"
 #include "shade/phong-inl.h"

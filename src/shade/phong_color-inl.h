@@ -10,7 +10,7 @@
 #include <hwy/highway.h>
 
 #include "core/dot3-inl.h"
-#include "shade/brdf-inl.h"
+#include "light/brdf-inl.h"
 #include "shade/span_kernels.h"
 #include "shade/span_loop-inl.h"
 

@@ -8,7 +8,7 @@
 
 #include <hwy/highway.h>
 
-#include "shade/brdf_variants.h"
+#include "light/brdf_variants.h"
 #include "shade/methods.h"
 #include "shade/normal_blocks.h"
 #include "shade/phong-inl.h"

@@ -3,7 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "raster/triangle_in_tile.h"
-#include "shade/lighting.h"
+#include "light/lighting.h"
 #include "shade/methods.h"
 
 namespace fastshade {

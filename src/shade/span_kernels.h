@@ -7,7 +7,7 @@
 
 #include "frame/shade_constants.h"
 #include "raster/planes.h"
-#include "shade/normal_blocks_mode.h"
+#include "frame/shade_constants.h"
 
 namespace fastshade {
 
@@ -101,7 +101,7 @@ void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, 
 void normals_span(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
                   int x0, int x1, RowTarget row);
 
-// quantize() (shade/lighting.h) as the SIMD kernels compute it: the same float operations,
+// quantize() (light/lighting.h) as the SIMD kernels compute it: the same float operations,
 // with the kernels' exp2/log2 for the sRGB curve.
 uint8_t quantize_like_simd(float v, bool srgb);
 

@@ -15,7 +15,7 @@
 #include <hwy/highway.h>
 
 #include "core/mask_bits-inl.h"
-#include "shade/fast_math-inl.h"
+#include "light/fast_math-inl.h"
 
 #include "raster/row_masks-inl.h"
 #include "raster/triangle_in_tile.h"
@@ -54,7 +54,7 @@ HWY_INLINE V EvalPlane(D d, const Plane& p, const LaneOffsets<D>& o) {
 }
 
 // clamp to [0, 1] (NaN becomes 0: x86 max returns its second operand), optional sRGB curve,
-// floor(255 v + 0.5), as quantize() in shade/lighting.h; the level stays a float (exact).
+// floor(255 v + 0.5), as quantize() in light/lighting.h; the level stays a float (exact).
 template <bool kSrgb, class D, class V = hn::Vec<D>>
 HWY_INLINE V QuantizeLevel(D d, V v) {
   v = hn::Min(hn::Max(v, hn::Zero(d)), hn::Set(d, 1.0f));
@@ -91,7 +91,7 @@ HWY_INLINE auto PackRGBA(D d, V r, V g, V b) {
 
 // The same with the output curve chosen at run time: a branch per vector that goes the same
 // way all frame. The per-pixel Blinn-Phong kernels take it instead of being compiled twice
-// (shade/brdf_variants.h says why their variants are few).
+// (light/brdf_variants.h says why their variants are few).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE auto PackRGBA(D d, V r, V g, V b, bool srgb) {
   return srgb ? PackRGBA<true>(d, r, g, b) : PackRGBA<false>(d, r, g, b);

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shade/brdf.h"
+#include "light/brdf.h"
 #include "shade/diffuse_quotient.h"
-#include "shade/fast_math.h"
+#include "light/fast_math.h"
 #include "shade/method.h"
 #include "classify/segment_step.h"
 #include "shade/normal_blocks.h"

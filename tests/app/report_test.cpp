@@ -18,7 +18,7 @@
 #include "app/report_output.h"
 #include "app/report_scenes.h"
 #include "fastshade/error.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 #include "support/cli_fixture.h"
 
 namespace fastshade {

@@ -17,7 +17,7 @@
 #include "fastshade/scene.h"
 #include "frame/edge_function.h"
 #include "raster/planes.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 
 namespace fastshade {
 namespace {

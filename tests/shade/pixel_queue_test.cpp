@@ -16,7 +16,7 @@
 #include "fastshade/compare.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 #include "shade/method.h"
 #include "shade/pixel_queue.h"
 

@@ -10,7 +10,7 @@
 #include "fastshade/primitives.h"
 #include "fastshade/render.h"
 #include "front/vertex_stage.h"
-#include "shade/lighting.h"
+#include "light/lighting.h"
 
 namespace fastshade {
 namespace {

@@ -12,7 +12,7 @@
 #include "classify/segment_step.h"
 #include "exec/isa.h"
 #include "frame/edge_function.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/normal_blocks.h"
 #include "shade/span_kernels.h"

@@ -15,7 +15,7 @@
 #include "core/limits.h"
 #include "fastshade/scene.h"
 #include "front/vertex_stage.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 #include "stability/stability_methods.h"
 
 namespace fastshade::stability {

@@ -25,7 +25,7 @@
 #include "fastshade/image.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
-#include "shade/lighting.h"
+#include "light/lighting.h"
 #include "stability/stability_bounds.h"
 #include "stability/stability_methods.h"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "fastshade/render.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 
 namespace fastshade::stability {
 

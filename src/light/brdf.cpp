@@ -1,4 +1,4 @@
-#include "shade/brdf.h"
+#include "light/brdf.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include "core/limits.h"
 #include "fastshade/error.h"
-#include "shade/fast_math.h"
+#include "light/fast_math.h"
 
 namespace fastshade {
 
@@ -212,10 +212,10 @@ double brdf_max_error(const BrdfParams& p, double n, int points) {
   return worst;
 }
 
-std::string BrdfChoice::name() const {
-  switch (kind) {
+std::string brdf_name(const BrdfChoice& choice) {
+  switch (choice.kind) {
     case BrdfKind::Exact: return "exact";
-    case BrdfKind::CosK: return "cosk:" + std::to_string(k);
+    case BrdfKind::CosK: return "cosk:" + std::to_string(choice.k);
     case BrdfKind::Schlick: return "schlick";
     case BrdfKind::SchlickPow2: return "schlick-pow2";
     case BrdfKind::Quadratic: return "quadratic";

@@ -1,12 +1,12 @@
 // eval_brdf(): the SIMD BRDF kernels over arrays, on the chosen ISA (tests, brdf-table).
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "shade/brdf_kernel.cpp"
+#define HWY_TARGET_INCLUDE "light/brdf_kernel.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
 #include <hwy/highway.h>
 
-#include "shade/brdf-inl.h"
-#include "shade/brdf_variants.h"
+#include "light/brdf-inl.h"
+#include "light/brdf_variants.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "frame/shade_constants.h"
-#include "shade/brdf.h"
+#include "light/brdf.h"
 
 namespace fastshade {
 

@@ -1,18 +1,18 @@
-// Gouraud's vertex lighting in lanes: blinn_phong<float>() (shade/lighting.h) with the same
+// Gouraud's vertex lighting in lanes: blinn_phong<float>() (light/lighting.h) with the same
 // float operations in the same order (glm::dot's (x + y) + z, the BRDF kernels of brdf-inl.h
 // that eval_brdf_one() mirrors), so a colour differs from the scalar one only as much as the
-// BRDF kernels do (tests/shade/vertex_light_test.cpp).
+// BRDF kernels do (tests/light/vertex_light_test.cpp).
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "shade/vertex_light.cpp"
+#define HWY_TARGET_INCLUDE "light/vertex_light.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
 #include <hwy/highway.h>
 
 #include "core/dot3-inl.h"
-#include "shade/brdf-inl.h"
-#include "shade/brdf_variants.h"
-#include "shade/lighting.h"
-#include "shade/vertex_light.h"
+#include "light/brdf-inl.h"
+#include "light/brdf_variants.h"
+#include "light/lighting.h"
+#include "light/vertex_light.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

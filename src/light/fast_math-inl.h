@@ -1,16 +1,16 @@
 // Division-free transcendental helpers for the SIMD kernels (per-target, Highway "-inl.h").
 // Highway's Log divides and its Exp is longer than 8-bit output needs; these keep the
 // divider (one per 10-15 cycles for 512-bit vectors on Zen 4) free for the normalisation.
-#if defined(FASTSHADE_SHADE_FAST_MATH_INL_H_) == defined(HWY_TARGET_TOGGLE)
-#ifdef FASTSHADE_SHADE_FAST_MATH_INL_H_
-#undef FASTSHADE_SHADE_FAST_MATH_INL_H_
+#if defined(FASTSHADE_LIGHT_FAST_MATH_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FASTSHADE_LIGHT_FAST_MATH_INL_H_
+#undef FASTSHADE_LIGHT_FAST_MATH_INL_H_
 #else
-#define FASTSHADE_SHADE_FAST_MATH_INL_H_
+#define FASTSHADE_LIGHT_FAST_MATH_INL_H_
 #endif
 
 #include <hwy/highway.h>
 
-#include "shade/fast_math.h"
+#include "light/fast_math.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

@@ -1,4 +1,4 @@
-// Gouraud's vertex lighting in lanes (shade/vertex_light.h) against its scalar reference,
+// Gouraud's vertex lighting in lanes (light/vertex_light.h) against its scalar reference,
 // vertex_color(), on every compiled ISA, for every BRDF and batch lengths 0..2W+1.
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 
 #include "exec/isa.h"
-#include "shade/brdf.h"
-#include "shade/vertex_light.h"
+#include "light/brdf.h"
+#include "light/vertex_light.h"
 
 namespace fastshade {
 namespace {

@@ -4,7 +4,7 @@
 #pragma once
 #include <type_traits>
 
-#include "shade/brdf.h"
+#include "light/brdf.h"
 
 namespace fastshade {
 
@@ -27,7 +27,7 @@ decltype(auto) with_brdf_kind(BrdfKind kind, F&& f) {
 
 // The lobe a per-pixel shading kernel is compiled for. The default lobe (exact c^n) is baked
 // in; the seven approximations share one instantiation that switches on the material's
-// BrdfKind per vector (SpecularLobe in shade/brdf-inl.h), and the sRGB curve is a run-time
+// BrdfKind per vector (SpecularLobe in light/brdf-inl.h), and the sRGB curve is a run-time
 // flag (PackRGBA in shade/span_loop-inl.h). One instantiation per lobe and curve (32 per
 // kernel, times 4 ISAs) made hybrid.cpp, phong.cpp and phong_normals.cpp take 5-7 minutes
 // each to compile; now they take about a minute. The branches go the same way all frame:

@@ -1,4 +1,4 @@
-// Gouraud's vertex lighting over a block of vertices: vertex_color() (shade/lighting.h) for
+// Gouraud's vertex lighting over a block of vertices: vertex_color() (light/lighting.h) for
 // each, in SIMD lanes where that computes the same colour. On a dense mesh the vertex stage
 // lights hundreds of thousands of vertices a frame (dragon_871k: 435k), and one by one that
 // was about a third of the gouraud frame's front end.

@@ -1,4 +1,4 @@
-// Scalar twins of shade/fast_math-inl.h: the same polynomials, constants and operation order
+// Scalar twins of light/fast_math-inl.h: the same polynomials, constants and operation order
 // (std::fma where the SIMD code uses MulAdd), for scalar references and scalar paths.
 #pragma once
 #include <algorithm>
@@ -51,7 +51,7 @@ inline constexpr float kMinInvSqrtInput = 0x1p-126f;
 
 // 1/sqrt(x) as two correctly rounded operations, sqrt then a division (relative error within
 // 2u): the same bits in scalar code and at every vector width, as the SIMD twin
-// (shade/fast_math-inl.h) needs. Not the hardware estimate, whose precision differs between
+// (light/fast_math-inl.h) needs. Not the hardware estimate, whose precision differs between
 // 128-, 256- and 512-bit vectors (12 vs 14 bits).
 inline float inv_sqrt(float x) { return 1.0f / std::sqrt(x); }  // finite x >= kMinInvSqrtInput
 

@@ -1,10 +1,10 @@
 // The BRDF approximations as SIMD kernels (per-target, Highway "-inl.h"): the same float
-// operations in the same order as brdf_one() in shade/brdf.cpp, the scalar reference.
-#if defined(FASTSHADE_SHADE_BRDF_INL_H_) == defined(HWY_TARGET_TOGGLE)
-#ifdef FASTSHADE_SHADE_BRDF_INL_H_
-#undef FASTSHADE_SHADE_BRDF_INL_H_
+// operations in the same order as brdf_one() in light/brdf.cpp, the scalar reference.
+#if defined(FASTSHADE_LIGHT_BRDF_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FASTSHADE_LIGHT_BRDF_INL_H_
+#undef FASTSHADE_LIGHT_BRDF_INL_H_
 #else
-#define FASTSHADE_SHADE_BRDF_INL_H_
+#define FASTSHADE_LIGHT_BRDF_INL_H_
 #endif
 
 #include <numbers>
@@ -12,9 +12,9 @@
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 
-#include "shade/brdf.h"
-#include "shade/brdf_variants.h"  // LobeKernel
-#include "shade/fast_math-inl.h"
+#include "light/brdf.h"
+#include "light/brdf_variants.h"  // LobeKernel
+#include "light/fast_math-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
@@ -59,7 +59,7 @@ HWY_INLINE V Brdf(D d, V c_in, const BrdfParams& p) {
   return hn::IfThenElseZero(positive, r);
 }
 
-// The lobe of a shading kernel compiled for kLobe (shade/brdf_variants.h): Brdf<Exact>, or
+// The lobe of a shading kernel compiled for kLobe (light/brdf_variants.h): Brdf<Exact>, or
 // Brdf of the material's kind, switched per call.
 template <LobeKernel kLobe, class D, class V = hn::Vec<D>>
 HWY_INLINE V SpecularLobe(D d, V c, const BrdfParams& p) {

@@ -1,0 +1,43 @@
+// Approximations of the specular lobe cos^n(gamma) = max(N.H, 0)^n (frame/brdf_params.h): the
+// paper's and the classics, each a small float kernel with parameters fixed per material
+// (shininess) once per frame. Definitions, errors and the readings chosen for garbled formulas:
+// docs/KERNELS.md.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frame/brdf_params.h"
+
+namespace fastshade {
+
+// Parses "exact", "cosk:K" (K integer 1..8), "schlick", "schlick-pow2", "quadratic",
+// "quadratic-fit", "poly2", "poly3"; throws InputError naming `where` otherwise.
+BrdfChoice parse_brdf(std::string_view text, const std::string& where);
+std::string brdf_name(const BrdfChoice& choice);  // the spelling parse_brdf reads
+std::vector<std::string> brdf_names();  // one spelling each, "cosk:3" for CosK
+
+// Fits and precomputes the parameters for shininess n in [1, 1e6] (fits take well under a
+// millisecond; done once per material and frame).
+BrdfParams make_brdf(const BrdfChoice& choice, double n);
+
+// One value, as eval_brdf_scalar: for scalar paths (Gouraud's vertex lighting).
+float eval_brdf_one(const BrdfParams& p, float n_dot_h);
+
+// The scalar reference of the SIMD kernel (light/brdf-inl.h): the same float operations in the
+// same order. Inputs are N.H values, any float; outputs are in [0, 1], 0 for NaN.
+void eval_brdf_scalar(const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);
+
+// The SIMD kernel on the process's chosen ISA (exec/isa.h), for tests and tables.
+void eval_brdf(const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);
+
+// cos^n(gamma) exactly, in double, for c = cos(gamma) (0 for c <= 0).
+double cos_power(double c, double n);
+
+// max |approximation - cos^n(gamma)| over gamma in [0, pi/2] by the SIMD kernel, on `points` + 1
+// angles uniform in gamma and as many uniform in the lobe's [0, 10 / sqrt(n)]: what
+// `fastshade brdf-table` reports (with 20000).
+double brdf_max_error(const BrdfParams& p, double n, int points);
+
+}  // namespace fastshade
