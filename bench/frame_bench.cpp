@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "exec/frame_timing.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
 
@@ -61,16 +62,11 @@ void BM_Frame(benchmark::State& state, std::string mesh, std::string method) {
     benchmark::DoNotOptimize(image.rgb.data());
     times.push_back(t);
   }
-  auto median = [&](double StageTimes::*field) {
-    std::vector<double> v;
-    for (const StageTimes& t : times) v.push_back(t.*field);
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-  };
-  state.counters["front_ms"] = median(&StageTimes::front_end);
-  state.counters["bin_ms"] = median(&StageTimes::binning);
-  state.counters["raster_ms"] = median(&StageTimes::raster_shade);
-  state.counters["total_ms"] = median(&StageTimes::total);
+  const StageTimes median = median_stages(times);
+  state.counters["front_ms"] = median.front_end;
+  state.counters["bin_ms"] = median.binning;
+  state.counters["raster_ms"] = median.raster_shade;
+  state.counters["total_ms"] = median.total;
   const RenderStats stats = renderer.last_stats();
   state.counters["Mtri"] = stats.triangles_in / 1e6;
   state.counters["Mpix"] = stats.covered_pixels / 1e6;

@@ -8,7 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "front/scene_geometry.h"
-#include "front/vertex_stage.h"
+#include "front/shade_setup.h"
 #include "light/lighting.h"
 #include "shaders.h"
 
@@ -81,7 +81,7 @@ GlFrame::GlFrame(const Scene& scene, bool phong)
   // view-space lights and materials (no sRGB, exact BRDF: the `phong` and `reference` setting).
   const fastshade::SceneGeometry geometry = fastshade::flatten_scene(scene);
   const fastshade::ViewTransform xf = fastshade::view_transform(scene);
-  const fastshade::ShadeConstants k = fastshade::shade_constants(scene, xf, false);
+  const fastshade::ShadeConstants k = fastshade::shade_constants(scene, xf);
   const int lights = static_cast<int>(k.lights.size());
   if (lights > kMaxLights)
     throw std::runtime_error(scene.source + ": " + std::to_string(lights) + " lights; this peer draws at most " +

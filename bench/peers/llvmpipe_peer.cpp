@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/median.h"
 #include "egl_context.h"
 #include "fastshade/compare.h"
 #include "fastshade/error.h"
@@ -47,12 +48,6 @@ void time_frame(Times& times, F&& frame) {
   frame();
   times.wall_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   times.cpu_ms.push_back(cpu_now_ms() - cpu0);
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 // "median (fastest)": on a shared machine the fastest frame is the one least disturbed.

@@ -42,11 +42,15 @@ struct RenderOptions {
 // Throws InputError ("--tile: ...") if an option is out of range or names no method.
 void validate(const RenderOptions& options);
 
-// The names `--method` accepts, with one line of description each.
+// The names `--method` accepts, with one line of description each, and whether the method
+// classifies triangles into shading paths (the options --spec-threshold, --spec-method,
+// --classifier and --classify-min-px apply to such methods only).
 struct MethodDescription {
   std::string name, summary;
+  bool classifies = false;
 };
 std::vector<MethodDescription> list_methods();
+bool method_classifies(const std::string& name);  // false for an unknown name
 
 struct StageTimes {  // milliseconds
   double front_end = 0, binning = 0, raster_shade = 0, total = 0;

@@ -19,6 +19,7 @@
 #include "app/scaling.h"
 #include "core/limits.h"
 #include "exec/frame_profile.h"
+#include "exec/frame_timing.h"
 #include "fastshade/error.h"
 #include "fastshade/scene.h"
 #include "io/atomic_file.h"
@@ -77,28 +78,12 @@ void check_out_dir(const fs::path& dir) {
     throw InputError(dir.string(), "directory '" + parent.string() + "' does not exist");
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // The process's CPU time (all threads, user + system) in seconds.
 double process_cpu_s() {
   rusage usage{};
   ::getrusage(RUSAGE_SELF, &usage);
   auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
-StageTimes stage_medians(const std::vector<StageTimes>& frames) {
-  auto of = [&](double StageTimes::*stage) {
-    std::vector<double> v;
-    for (const StageTimes& t : frames) v.push_back(t.*stage);
-    return median(std::move(v));
-  };
-  return {of(&StageTimes::front_end), of(&StageTimes::binning), of(&StageTimes::raster_shade),
-          of(&StageTimes::total)};
 }
 
 ScalingModel model_from(int tile_px, const std::vector<FrameProfile>& one_thread) {
@@ -140,7 +125,7 @@ void measure_tile(const Scene& scene, const ScalingCommand& cmd, int tile_px,
       renderers[i]->render_frame(images[i], nullptr, &profiles[i][f]);
     }
   for (std::size_t i = 0; i < threads.size(); ++i)
-    run.points.push_back({tile_px, threads[i], threads[i] > hardware_threads, stage_medians(times[i]),
+    run.points.push_back({tile_px, threads[i], threads[i] > hardware_threads, median_stages(times[i]),
                           wall_s[i] > 0 ? cpu_s[i] / wall_s[i] : 0.0,
                           schedule_phases(profiles[i], /*with_overheads=*/false)});
   run.models.push_back(model_from(tile_px, profiles.front()));  // threads.front() == 1

@@ -18,13 +18,6 @@ double frame_cost(const Scene& scene) {
   return double(scene.width) * scene.height + kTriangleCostPx * triangles;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  if (n == 0) return 0;
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::vector<Measured> measure_in_rounds(const std::string& scene_name, const Scene& scene,
                                         std::span<const RenderOptions> options,
                                         std::span<const std::string> labels, int frames,

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/progress.h"
+#include "core/median.h"
 #include "fastshade/image.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
@@ -21,8 +22,6 @@ struct Measured {
 
 // What one frame of `scene` costs, in the progress bar's unit (pixels).
 double frame_cost(const Scene& scene);
-
-double median(std::vector<double> values);
 
 // Renders every configuration in rounds (round 0 warms up, untimed): one frame of each, then
 // the next round, starting one configuration later each time, so a machine that slows down

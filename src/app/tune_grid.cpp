@@ -37,7 +37,7 @@ void validate_candidate(const Candidate& c) {
 // The tile is named when the candidates differ in it.
 std::string label_of(const RenderOptions& o, bool tiles_vary) {
   std::string label = o.method + (tiles_vary ? " --tile " + std::to_string(o.tile_px) : "");
-  if (o.method != "auto") return label;
+  if (!method_classifies(o.method)) return label;
   label += " --spec-threshold " + format_double("%.4g", o.spec_threshold) + " --spec-method " + o.spec_method;
   if (o.classifier != RenderOptions{}.classifier) label += " --classifier " + o.classifier;
   if (o.classify_min_px != RenderOptions{}.classify_min_px)
@@ -61,7 +61,7 @@ std::size_t plan_candidates(const TuneCommand& cmd, const RenderOptions& base, s
       RenderOptions o = base;
       o.method = method;
       o.tile_px = tile;
-      if (method != "auto") {
+      if (!method_classifies(method)) {
         add(o);
         continue;
       }

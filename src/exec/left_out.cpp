@@ -16,8 +16,7 @@ bool is_zero(const glm::vec3& c) { return c.r == 0.0f && c.g == 0.0f && c.b == 0
 
 }  // namespace
 
-std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeConstants& k,
-                                         const RenderOptions& o, const FrameFacts& f) {
+std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeConstants& k, const FrameFacts& f) {
   std::vector<std::string> out;
   const long long empty = f.tiles_total - f.back_end.tiles_nonempty;
   if (empty > 0)
@@ -32,7 +31,7 @@ std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeCons
   if (f.segments_no_specular > 0)
     out.push_back(plural(f.segments_no_specular, "hybrid triangle") +
                   ": segment ends lit without the specular term, which stays below 2^-24 on them");
-  if (o.method != "auto") return out;
+  if (!f.method_classifies) return out;
 
   if (k.lights.empty()) {
     out.push_back("no lights: every colour is the ambient one; no normals, no classification, "
@@ -55,7 +54,7 @@ std::vector<std::string> left_out_report(const SceneGeometry& g, const ShadeCons
     const auto& t = f.tally->triangles;
     if (f.tally->unclassified > 0) {
       std::ostringstream bound;  // as typed: 80, 12.5
-      bound << o.classify_min_px;
+      bound << f.classify_min_px;
       out.push_back(plural(f.tally->unclassified, "triangle") + " in blocks whose screen boxes average under " +
                     bound.str() +
                     " px: specular path without classification, which would cost more than it saves "

@@ -1,16 +1,16 @@
 // The frame loop: front end (vertex stage, triangle setup), binning, back end, with stage
-// times. Implements include/fastshade/render.h.
+// times: the Renderer of include/fastshade/render.h.
 #include <algorithm>
 #include <chrono>
 #include <optional>
-#include <sstream>
 
 #include <tbb/parallel_for.h>
 
-#include "classify/segment_step.h"
+#include "classify/classifier.h"
 #include "exec/frame_profile.h"
+#include "exec/frame_stats.h"
 #include "exec/isa.h"
-#include "exec/left_out.h"
+#include "exec/resolve_options.h"
 #include "exec/tile_executor.h"
 #include "exec/tile_size.h"
 #include "exec/worker_arena.h"
@@ -20,76 +20,12 @@
 #include "front/scene_geometry.h"
 #include "front/segment_steps.h"
 #include "front/self_occlusion.h"
+#include "front/shade_setup.h"
 #include "front/triangle_setup.h"
 #include "front/vertex_stage.h"
-#include "light/brdf.h"
 #include "shade/method.h"
-#include "shade/normal_blocks.h"
 
 namespace fastshade {
-
-std::string RenderOptions::to_string() const {
-  std::ostringstream s;
-  s << "method=" << method << " threads=" << threads << " tile=" << (tile_px ? std::to_string(tile_px) : "auto")
-    << " isa=" << isa
-    << " srgb=" << (srgb ? "on" : "off") << " brdf=" << brdf << " max_error=" << max_error
-    << " normals=" << normals << " gouraud=" << gouraud << " hidden_faces=" << hidden_faces;
-  if (method == "auto")
-    s << " spec_threshold=" << spec_threshold << " spec_method=" << spec_method
-      << " classifier=" << classifier << " classify_min_px=" << classify_min_px;
-  return s.str();
-}
-
-void validate(const RenderOptions& o) {
-  if (o.threads < 0 || o.threads > 1024)
-    throw InputError("--threads", "expected 0 (all) to 1024, got " + std::to_string(o.threads));
-  if (o.tile_px != 0 && (o.tile_px < limits::kMinTilePx || o.tile_px > limits::kMaxTilePx ||
-                         (o.tile_px & (o.tile_px - 1)) != 0))
-    throw InputError("--tile", "expected a power of two from " + std::to_string(limits::kMinTilePx) + " to " +
-                                   std::to_string(limits::kMaxTilePx) +
-                                   ", or 0 (sized from the image and threads), got " + std::to_string(o.tile_px));
-  const Method* method = find_method(o.method);
-  if (!method) {
-    std::string names;
-    for (const Method& m : all_methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
-    throw InputError("--method", "unknown method '" + o.method + "' (expected one of: " + names + ")");
-  }
-  parse_brdf(o.brdf, "--brdf");
-  parse_normals(o.normals, "--normals");
-  if (o.gouraud != "increments" && o.gouraud != "sierpinski")
-    throw InputError("--gouraud", "expected increments or sierpinski, got '" + o.gouraud + "'");
-  if (o.hidden_faces != "skip" && o.hidden_faces != "draw")
-    throw InputError("--hidden-faces", "expected skip or draw, got '" + o.hidden_faces + "'");
-  if (o.gouraud == "sierpinski" && o.method != "gouraud")
-    throw InputError("--gouraud", "sierpinski subtriangles apply to --method gouraud only");
-  if (!(o.max_error >= 0 && o.max_error <= 255))
-    throw InputError("--max-error", "expected 0 to 255 (8-bit steps), got " + std::to_string(o.max_error));
-  if (!method->classifies) {
-    const RenderOptions defaults;
-    for (const auto& [set, flag] : {std::pair{o.spec_threshold != defaults.spec_threshold, "--spec-threshold"},
-                                    std::pair{o.spec_method != defaults.spec_method, "--spec-method"},
-                                    std::pair{o.classifier != defaults.classifier, "--classifier"},
-                                    std::pair{o.classify_min_px != defaults.classify_min_px, "--classify-min-px"}})
-      if (set) throw InputError(flag, "applies to --method auto only");
-  }
-  if (const std::string why = method->refuse(o); !why.empty()) {
-    const std::size_t colon = why.find(": ");  // "--option: reason"
-    throw InputError(why.substr(0, colon), why.substr(colon + 2));
-  }
-}
-
-std::vector<MethodDescription> list_methods() {
-  std::vector<MethodDescription> out;
-  for (const Method& m : all_methods()) out.push_back({std::string(m.name), std::string(m.summary)});
-  return out;
-}
-
-double RenderStats::mpix_per_s() const {
-  return median.total > 0 ? covered_pixels / (median.total * 1e3) : 0.0;
-}
-double RenderStats::mtri_per_s() const {
-  return median.total > 0 ? triangles_in / (median.total * 1e3) : 0.0;
-}
 
 namespace {
 
@@ -116,7 +52,7 @@ TileGrid make_grid(int width, int height, int tile_px) {
 }  // namespace
 
 struct Renderer::Impl {
-  RenderOptions options;
+  RenderChoices choices;
   SceneGeometry geometry;
   const Method* method;
   ViewTransform xf;
@@ -133,39 +69,39 @@ struct Renderer::Impl {
   TileExecutor executor;
   RenderStats stats;
 
-  Impl(const Scene& scene, const RenderOptions& o)
-      : options(o),
+  Impl(const Scene& scene, const RenderOptions& o, const ResolvedOptions& resolved)
+      : choices(resolved.choices),
         geometry(flatten_scene(scene)),
-        method(find_method(o.method)),
+        method(resolved.method),
         xf(view_transform(scene)),
         arena(o.threads) {
+    const RenderChoices& c = choices;
     select_isa(o.isa);
     frame.grid = make_grid(scene.width, scene.height,
                            resolve_tile_px(o.tile_px, scene.width, scene.height, arena.threads()));
-    frame.shade = shade_constants(scene, xf, o.srgb, parse_brdf(o.brdf, "--brdf"));
-    frame.shade.hybrid_tolerance = hybrid_tolerance(o.max_error);
-    frame.shade.normals = parse_normals(o.normals, "--normals");
+    frame.shade = shade_constants(scene, xf, c);
     needs = method->needs(frame.shade);
-    draw = method->select(frame.shade, o);
+    draw = method->select(frame.shade, c);
     // Without lights `auto` has nothing to classify (every colour is the ambient one).
     classified = method->classifies && !frame.shade.lights.empty();
     if (classified) {
-      classifier.emplace(frame.shade, ClassifierParams{o.spec_threshold, auto_gouraud_budget(o.max_error),
-                                                       o.classifier == "paper"});
+      const bool paper_rule = c.classifier == ClassifierRule::Paper;
+      classifier.emplace(frame.shade,
+                         ClassifierParams{c.spec_threshold, auto_gouraud_budget(c.max_error_lsb), paper_rule});
       setup.classifier = &*classifier;
       // The literal rule is there to measure the paper's classifier: it classifies everything.
-      setup.classify_min_box_px = o.classifier == "paper" ? 0.0 : o.classify_min_px;
+      setup.classify_min_box_px = paper_rule ? 0.0 : c.classify_min_px;
     }
     setup.viewport = make_viewport(scene.width, scene.height);
     setup.cull = scene.cull;
     // Culling back faces would remove an inward-wound mesh's occluders.
-    if (o.hidden_faces == "skip" && scene.cull == Cull::None) {
+    if (c.skip_hidden_faces && scene.cull == Cull::None) {
       closures = analyze_closures(geometry);
       setup.occlusion = &occlusion;
     }
     setup.with_attrs = needs.normal || needs.color || needs.position;
-    setup.sierpinski = o.gouraud == "sierpinski";
-    setup.segment_steps = method->segment_steps(o);
+    setup.sierpinski = c.sierpinski;
+    setup.segment_steps = method->segment_steps(c);
     const std::size_t chunks =
         (geometry.triangles.size() + limits::kTrianglesPerChunk - 1) / limits::kTrianglesPerChunk;
     frame.chunks.resize(chunks);
@@ -236,41 +172,15 @@ struct Renderer::Impl {
       back_end = counts;
     });
     stats.threads = arena.threads_available();
-    stats.tiles_nonempty = back_end.tiles_nonempty;
-    stats.covered_pixels = back_end.covered_pixels;
-    stats.triangles_drawn = stats.triangles_dropped = stats.triangles_culled = stats.triangles_hidden = 0;
-    PathTally tally;
-    for (const Chunk& c : frame.chunks) {
-      stats.triangles_drawn += static_cast<long long>(c.triangles.size());
-      stats.triangles_dropped += c.dropped;
-      stats.triangles_culled += c.culled;
-      stats.triangles_hidden += c.hidden;
-      tally.add(c.paths);
-    }
-    stats.paths.clear();
-    stats.triangles_unclassified = tally.unclassified;
-    stats.segment_triangles.clear();
-    stats.segment_split = stats.segment_no_specular = 0;
-    if (setup.segment_steps != SegmentSteps::None) {
-      SegmentTally segments = tally_segment_plans(frame);
-      stats.segment_triangles = std::move(segments.by_log2_px);
-      stats.segment_split = segments.split;
-      stats.segment_no_specular = segments.no_specular;
-    }
-    if (classified)
-      for (int p = 1; p < kShadePathCount; ++p)
-        stats.paths.push_back({kShadePathNames[p], tally.triangles[p], back_end.path_pixels[p]});
-    stats.left_out = left_out_report(geometry, frame.shade, options,
-                                     {classified ? &tally : nullptr, back_end, stats.tiles_total, objects_culled,
-                                      stats.triangles_hidden, stats.segment_no_specular});
+    count_frame({geometry, frame, back_end, objects_culled, method->classifies, classified,
+                 choices.classify_min_px, setup.segment_steps},
+                stats);
     if (times) *times = t;
   }
 };
 
-Renderer::Renderer(const Scene& scene, const RenderOptions& options) {
-  validate(options);
-  impl_ = std::make_unique<Impl>(scene, options);
-}
+Renderer::Renderer(const Scene& scene, const RenderOptions& options)
+    : impl_(std::make_unique<Impl>(scene, options, resolve(options))) {}
 Renderer::~Renderer() = default;
 
 Image Renderer::render_frame(StageTimes* times, FrameProfile* profile) {
@@ -282,42 +192,5 @@ void Renderer::render_frame(Image& into, StageTimes* times, FrameProfile* profil
   impl_->render(into, times, profile);
 }
 RenderStats Renderer::last_stats() const { return impl_->stats; }
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-}  // namespace
-
-Image render(const Scene& scene, const RenderOptions& options, int frames, RenderStats* stats) {
-  Renderer renderer(scene, options);
-  frames = std::max(frames, 1);
-  StageTimes t;
-  Image image = renderer.render_frame(&t);
-  std::vector<double> front, bin, back, total;
-  auto record = [&] {
-    front.push_back(t.front_end);
-    bin.push_back(t.binning);
-    back.push_back(t.raster_shade);
-    total.push_back(t.total);
-  };
-  // One frame is the frame asked for, timed; a benchmark's first frame is a warm-up
-  // (first-touch allocation, caches) that no median includes.
-  if (frames == 1) record();
-  for (int i = 0; i < frames && frames > 1; ++i) {
-    renderer.render_frame(image, &t);
-    record();
-  }
-  if (stats) {
-    *stats = renderer.last_stats();
-    stats->frames = frames;
-    stats->median = {median(front), median(bin), median(back), median(total)};
-  }
-  return image;
-}
 
 }  // namespace fastshade

@@ -41,8 +41,4 @@ int run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, con
                       const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
                       AttrArrays& attrs);
 
-// Lights to view space and the infinite viewer's half vectors; materials as constants.
-ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, bool srgb,
-                              const BrdfChoice& brdf = {});
-
 }  // namespace fastshade

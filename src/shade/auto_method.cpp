@@ -1,8 +1,6 @@
 // `auto`: the classifier's plan (classify/classifier.h) carried out. The front end marks each
 // triangle's shading path; here each path gets its kernel, chosen once per frame, and a tile
 // whose triangles share one path runs that kernel alone (exec/tile_executor.cpp).
-#include <cmath>
-
 #include "shade/methods.h"
 #include "shade/pixel_queue.h"
 
@@ -36,7 +34,7 @@ AttrNeeds auto_needs(const ShadeConstants& k) {
           .diffuse_color = true};
 }
 
-TileDraw select_auto(const ShadeConstants& k, const RenderOptions& o) {
+TileDraw select_auto(const ShadeConstants& k, const RenderChoices& c) {
   if (k.lights.empty()) return {select_gouraud_diffuse(k)};
   TileDraw draw;
   draw.any = draw_by_path;
@@ -44,26 +42,12 @@ TileDraw select_auto(const ShadeConstants& k, const RenderOptions& o) {
   draw.path[static_cast<int>(ShadePath::PixelDiffuse)] =
       k.normals == SpanNormals::Normalize ? select_phong_diffuse(k) : select_phong_normals_diffuse(k);
   draw.path[static_cast<int>(ShadePath::Specular)] =
-      o.spec_method == "phong" ? select_phong(k) : select_hybrid(k);
+      c.spec_method == SpecMethod::Phong ? select_phong(k) : select_hybrid(k);
   return draw;
 }
 
-SegmentSteps auto_segment_steps(const RenderOptions& o) {
-  return o.spec_method == "hybrid" ? SegmentSteps::SpecularPath : SegmentSteps::None;
-}
-
-std::string auto_refuses(const RenderOptions& o) {
-  if (o.spec_method != "hybrid" && o.spec_method != "phong")
-    return "--spec-method: expected hybrid or phong, got '" + o.spec_method + "'";
-  if (o.classifier != "bound" && o.classifier != "paper")
-    return "--classifier: expected bound or paper, got '" + o.classifier + "'";
-  if (!(o.spec_threshold >= 0.0 && o.spec_threshold <= 1.0))
-    return "--spec-threshold: expected 0 to 1 (colour units; 1/510 is half an 8-bit step), got " +
-           std::to_string(o.spec_threshold);
-  if (!(o.classify_min_px >= 0.0 && std::isfinite(o.classify_min_px)))
-    return "--classify-min-px: expected a finite number of pixels >= 0 (0: classify every triangle), got " +
-           std::to_string(o.classify_min_px);
-  return {};
+SegmentSteps auto_segment_steps(const RenderChoices& c) {
+  return c.spec_method == SpecMethod::Hybrid ? SegmentSteps::SpecularPath : SegmentSteps::None;
 }
 
 }  // namespace fastshade

@@ -9,12 +9,12 @@ namespace fastshade {
 namespace {
 
 template <SegmentSteps kSteps>
-SegmentSteps steps(const RenderOptions&) {
+SegmentSteps steps(const RenderChoices&) {
   return kSteps;
 }
 
 template <DrawTriangleFn (*kSelect)(const ShadeConstants&)>
-TileDraw select_one(const ShadeConstants& shade, const RenderOptions&) {
+TileDraw select_one(const ShadeConstants& shade, const RenderChoices&) {
   return {kSelect(shade)};
 }
 
@@ -23,25 +23,26 @@ const std::array kMethods = {
            "the classifier's plan: diffuse-only Gouraud where no highlight can show and "
            "interpolation stays within --max-error, per-pixel diffuse where it would not, "
            "--spec-method where a highlight may show (docs/CLASSIFIER.md)",
-           auto_needs, select_auto, auto_refuses, true, auto_segment_steps},
+           auto_needs, select_auto, accepts_all, true, false, auto_segment_steps},
     Method{"reference",
            "per-pixel Blinn-Phong in double precision from exact barycentrics: the yardstick",
-           reference_needs, select_one<select_reference>, reference_refuses, false,
+           reference_needs, select_one<select_reference>, reference_refuses, false, false,
            steps<SegmentSteps::None>},
     Method{"phong", "per-pixel Blinn-Phong in float with exact pow, as a GL fragment shader does",
-           phong_needs, select_one<select_phong>, accepts_all, false, steps<SegmentSteps::None>},
+           phong_needs, select_one<select_phong>, accepts_all, false, false, steps<SegmentSteps::None>},
     Method{"hybrid",
            "Phong at the ends of 2^m-pixel segments, linear between, m adapted per triangle "
            "to --max-error",
-           phong_needs, select_one<select_hybrid>, refuses_normals, false, steps<SegmentSteps::All>},
+           phong_needs, select_one<select_hybrid>, refuses_normals, false, false, steps<SegmentSteps::All>},
     Method{"gouraud", "Blinn-Phong per vertex, colour interpolated perspective-correctly",
-           gouraud_needs, select_one<select_gouraud>, refuses_normals, false, steps<SegmentSteps::None>},
+           gouraud_needs, select_one<select_gouraud>, refuses_normals, false, true,
+           steps<SegmentSteps::None>},
 };
 
 }  // namespace
 
-std::string refuses_normals(const RenderOptions& o) {
-  if (o.normals != "normalize")
+std::string refuses_normals(const RenderChoices& c) {
+  if (c.normals != SpanNormals::Normalize)
     return "--normals: only phong interpolates normals along a span; use --method phong";
   return {};
 }

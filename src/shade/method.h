@@ -7,9 +7,9 @@
 #include <string>
 #include <string_view>
 
-#include "fastshade/render.h"
 #include "frame/frame.h"
 #include "frame/method_needs.h"
+#include "frame/render_choices.h"
 #include "raster/spans.h"
 
 namespace fastshade {
@@ -50,13 +50,17 @@ struct Method {
   std::string_view summary;
   AttrNeeds (*needs)(const ShadeConstants& shade);
   // Chooses the variant for this frame (ISA, viewer, sRGB...): decided once, outside loops.
-  TileDraw (*select)(const ShadeConstants& shade, const RenderOptions& options);
-  // Why these options make no sense with this method ("--brdf: ..."), or "" if they do.
-  std::string (*refuse)(const RenderOptions& options);
-  // Whether the front end classifies triangles into shading paths for this method.
+  TileDraw (*select)(const ShadeConstants& shade, const RenderChoices& choices);
+  // Why these choices make no sense with this method ("--brdf: ..."), or "" if they do.
+  std::string (*refuse)(const RenderChoices& choices);
+  // Whether the front end classifies triangles into shading paths for this method (and the
+  // classifier's options apply).
   bool classifies;
+  // Whether --gouraud sierpinski applies: set-up splits large triangles into subtriangles whose
+  // vertices are lit, which only a method lighting vertices alone can use.
+  bool lights_subtriangles;
   // Which triangles the front end gives a hybrid segment length (frame/method_needs.h).
-  SegmentSteps (*segment_steps)(const RenderOptions& options);
+  SegmentSteps (*segment_steps)(const RenderChoices& choices);
 };
 
 std::span<const Method> all_methods();

@@ -9,17 +9,17 @@ AttrNeeds reference_needs(const ShadeConstants& shade);
 // float cannot hold (MaterialConstants::shade_in_double), decided per triangle at setup.
 void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& target);
 DrawTriangleFn select_reference(const ShadeConstants& shade);
-std::string reference_refuses(const RenderOptions& options);
+std::string reference_refuses(const RenderChoices& choices);
 
 AttrNeeds phong_needs(const ShadeConstants& shade);
 DrawTriangleFn select_phong(const ShadeConstants& shade);
 DrawTriangleFn select_phong_normals(const ShadeConstants& shade);  // --normals other than normalize
 
 // Methods that interpolate no per-pixel normal refuse --normals.
-std::string refuses_normals(const RenderOptions& options);
+std::string refuses_normals(const RenderChoices& choices);
 
 // For methods that take every option.
-inline std::string accepts_all(const RenderOptions&) { return {}; }
+inline std::string accepts_all(const RenderChoices&) { return {}; }
 
 AttrNeeds gouraud_needs(const ShadeConstants& shade);
 DrawTriangleFn select_gouraud(const ShadeConstants& shade);
@@ -31,9 +31,8 @@ DrawTriangleFn select_phong_diffuse(const ShadeConstants& shade);
 DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants& shade);
 
 AttrNeeds auto_needs(const ShadeConstants& shade);
-TileDraw select_auto(const ShadeConstants& shade, const RenderOptions& options);
-std::string auto_refuses(const RenderOptions& options);
-SegmentSteps auto_segment_steps(const RenderOptions& options);
+TileDraw select_auto(const ShadeConstants& shade, const RenderChoices& choices);
+SegmentSteps auto_segment_steps(const RenderChoices& choices);
 
 DrawTriangleFn select_hybrid(const ShadeConstants& shade);
 

@@ -56,10 +56,10 @@ AttrNeeds reference_needs(const ShadeConstants& shade) {
 
 DrawTriangleFn select_reference(const ShadeConstants&) { return draw_reference; }
 
-std::string reference_refuses(const RenderOptions& o) {
-  if (o.normals != "normalize")
+std::string reference_refuses(const RenderChoices& c) {
+  if (c.normals != SpanNormals::Normalize)
     return "--normals: the reference method normalises exactly in double; use --method phong";
-  if (o.brdf != "exact")
+  if (c.brdf.kind != BrdfKind::Exact)
     return "--brdf: the reference method evaluates cos^n exactly in double; use --brdf with "
            "phong, gouraud or hybrid";
   return {};

@@ -9,7 +9,7 @@
 
 #include "fastshade/primitives.h"
 #include "fastshade/render.h"
-#include "front/vertex_stage.h"
+#include "front/shade_setup.h"
 #include "light/lighting.h"
 
 namespace fastshade {
@@ -51,7 +51,7 @@ TEST(ReferenceShading, FineIcosphereMatchesAnalyticSphereWithinDerivedBound) {
   ASSERT_LT(bound_lsb, 2.0) << "the bound is meant to be tight: it would not catch much";
 
   const ViewTransform xf = view_transform(scene);
-  const ShadeConstants k = shade_constants(scene, xf, false);
+  const ShadeConstants k = shade_constants(scene, xf);
   const glm::dmat4 inv = glm::inverse(glm::dmat4(xf.proj) * glm::dmat4(xf.view));
   const glm::dvec3 eye(scene.camera.eye);
   double worst = 0, sum = 0;

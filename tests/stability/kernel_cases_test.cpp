@@ -35,7 +35,7 @@ struct Lighting {
   Scene scene;  // the same, for the bounds
   explicit Lighting(double n) {
     scene = base_scene(1, 1, n, glm::vec3(0.3f, 0.2f, 1.0f));
-    k = shade_constants(scene, view_transform(scene), false);
+    k = shade_constants(scene, view_transform(scene));
     m = k.materials[0];
   }
   glm::dvec3 l() const { return glm::dvec3(k.lights[0].l_view); }

@@ -14,7 +14,7 @@
 
 #include "core/limits.h"
 #include "fastshade/scene.h"
-#include "front/vertex_stage.h"
+#include "front/shade_setup.h"
 #include "light/brdf.h"
 #include "stability/stability_methods.h"
 
@@ -149,7 +149,7 @@ inline Bound derive_bound(const MethodConfig& config, const Scene& scene, const 
   const BrdfChoice brdf = parse_brdf(o.brdf, "stability");
   // The renderer's own fallback decision; only exact cos^n falls back (asking with the exact
   // lobe spares the approximations' fits).
-  ShadeConstants k = shade_constants(scene, view_transform(scene), false, BrdfChoice{});
+  ShadeConstants k = shade_constants(scene, view_transform(scene));
   if (brdf.kind != BrdfKind::Exact)
     for (MaterialConstants& m : k.materials) m.shade_in_double = false;
   Bound worst;

@@ -1,0 +1,19 @@
+// RenderOptions, checked and parsed once: the method they name and their typed choices
+// (frame/render_choices.h). validate() is resolve() with the result dropped.
+#pragma once
+#include "fastshade/render.h"
+#include "frame/render_choices.h"
+#include "shade/method.h"
+
+namespace fastshade {
+
+struct ResolvedOptions {
+  const Method* method = nullptr;
+  RenderChoices choices;
+};
+
+// Throws InputError ("--tile: ...") for an option out of range, an unknown name, or a
+// combination the method refuses.
+ResolvedOptions resolve(const RenderOptions& options);
+
+}  // namespace fastshade
