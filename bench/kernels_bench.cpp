@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "frame/edge_function.h"
 #include "light/brdf.h"
 #include "shade/span_kernels.h"
@@ -64,42 +64,42 @@ struct Setup {
 
 template <typename Kernel>
 void run(benchmark::State& state, const std::string& isa, Kernel kernel, const std::string& brdf = "exact") {
+  SimdTarget simd;
   try {
-    select_isa(isa);
+    simd = simd_target(isa);
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     return;
   }
   Setup s(brdf);
   for (auto _ : state) {
-    kernel(s, s.row());
+    kernel(simd, s, s.row());
     benchmark::ClobberMemory();
   }
   state.counters["px_per_ns"] = benchmark::Counter(double(kSpan) * state.iterations(),
                                                     benchmark::Counter::kIsRate);
   state.counters["px_per_ns"].value /= 1e9;
-  select_isa("best");
 }
 
 void register_all() {
   for (const char* isa_name : {"scalar", "sse4", "avx2", "avx512"}) {
     const std::string isa = isa_name;
     benchmark::RegisterBenchmark(("gouraud_span/" + isa).c_str(), [isa](benchmark::State& st) {
-      run(st, isa, [](Setup& s, RowTarget r) { gouraud_span(s.gouraud, false, kY, kX0, kX0 + kSpan - 1, r); });
+      run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) { gouraud_span(simd, s.gouraud, false, kY, kX0, kX0 + kSpan - 1, r); });
     });
     benchmark::RegisterBenchmark(("phong_span/" + isa).c_str(), [isa](benchmark::State& st) {
-      run(st, isa, [](Setup& s, RowTarget r) { phong_span(s.phong, kY, kX0, kX0 + kSpan - 1, r); });
+      run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) { phong_span(simd, s.phong, kY, kX0, kX0 + kSpan - 1, r); });
     });
     for (int step : {4, 16})
       benchmark::RegisterBenchmark(("hybrid_span_step" + std::to_string(step) + "/" + isa).c_str(),
                                    [isa, step](benchmark::State& st) {
-                                     run(st, isa, [step](Setup& s, RowTarget r) {
-                                       hybrid_span(s.phong, {step, kX0, kX0 + kSpan - 1}, kY, kX0, kX0 + kSpan - 1, r);
+                                     run(st, isa, [step](SimdTarget simd, Setup& s, RowTarget r) {
+                                       hybrid_span(simd, s.phong, {step, kX0, kX0 + kSpan - 1}, kY, kX0, kX0 + kSpan - 1, r);
                                      });
                                    });
     for (const char* brdf : {"schlick", "schlick-pow2", "poly3"})
       benchmark::RegisterBenchmark(("phong_span_" + std::string(brdf) + "/" + isa).c_str(), [isa, brdf](benchmark::State& st) {
-        run(st, isa, [](Setup& s, RowTarget r) { phong_span(s.phong, kY, kX0, kX0 + kSpan - 1, r); }, brdf);
+        run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) { phong_span(simd, s.phong, kY, kX0, kX0 + kSpan - 1, r); }, brdf);
       });
   }
 }

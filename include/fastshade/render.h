@@ -16,7 +16,7 @@ struct RenderOptions {
                            // image and threads (exec/tile_size.h)
   std::string method = "auto";
   bool srgb = false;       // encode with the sRGB curve before quantising
-  std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: a process-wide choice
+  std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: this renderer's SIMD target
   std::string brdf = "exact";  // specular approximation (docs/KERNELS.md)
   double max_error = 1.0;  // auto, hybrid, --normals adaptive: error budget in 8-bit steps (LSB)
   std::string normals = "normalize";  // phong: normalize | adaptive | equal-angle

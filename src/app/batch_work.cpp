@@ -134,7 +134,7 @@ class Workers {
       Scene scene = task.mesh->fit_scene;
       scene.camera = orbit_camera(scene.camera, image.angle_deg);
       const Clock::time_point t0 = Clock::now();
-      // Safe on several workers at once: select_isa writes Highway's globals only on a change.
+      // Safe on several workers at once: a renderer's ISA is its own (core/simd_target.h).
       Renderer renderer(scene, setup_.options);
       const Image frame = renderer.render_frame();
       const RenderStats stats = renderer.last_stats();

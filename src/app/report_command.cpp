@@ -17,7 +17,7 @@
 #include "app/report_output.h"
 #include "app/report_scenes.h"
 #include "app/timing_rounds.h"
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "fastshade/error.h"
 #include "io/atomic_file.h"
 
@@ -193,7 +193,7 @@ int run_report(const ReportCommand& cmd) {
   RenderOptions common;
   common.threads = cmd.threads;
   validate(common);
-  select_isa(cmd.isa);
+  const std::string isa_name = simd_target_name(simd_target(cmd.isa));  // refuses a bad --isa first
   const Plan plan = plan_configs(cmd);
   if (cmd.list_configs) {
     for (const PlannedConfig& p : plan.configs) std::printf("measured  %s\n", p.config.label.c_str());
@@ -216,7 +216,7 @@ int run_report(const ReportCommand& cmd) {
   }
   fs::create_directories(out);
 
-  RunInfo run{cpu_model(), active_isa(), build_commit(), utc_now(), 0, cmd.frames, load_average()};
+  RunInfo run{cpu_model(), isa_name, build_commit(), utc_now(), 0, cmd.frames, load_average()};
   std::vector<ReportRow> rows;
   {
     Progress progress(total_cost, stderr, ::isatty(STDERR_FILENO) != 0);

@@ -17,7 +17,7 @@
 #include "app/timing_rounds.h"
 #include "app/tune_grid.h"
 #include "app/tune_output.h"
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "fastshade/error.h"
 #include "io/atomic_file.h"
 #include "io/render_config.h"
@@ -73,7 +73,7 @@ std::vector<std::string_view> tuned_keys(const RenderOptions& o) {
 
 int run_tune(const TuneCommand& cmd) {
   check_usage(cmd);
-  select_isa(cmd.isa);
+  const std::string isa_name = simd_target_name(simd_target(cmd.isa));  // refuses a bad --isa first
   RenderOptions defaults;
   defaults.threads = cmd.threads;
   defaults.isa = cmd.isa;
@@ -98,7 +98,7 @@ int run_tune(const TuneCommand& cmd) {
   }
 
   TuneTable table;
-  table.run = {cpu_model(), active_isa(), build_commit(), utc_now(), 0, cmd.frames, load_average()};
+  table.run = {cpu_model(), isa_name, build_commit(), utc_now(), 0, cmd.frames, load_average()};
   table.criteria = {cmd.max_error, cmd.max_pct_over_1lsb, cmd.min_gain_pct, default_candidate};
   std::vector<RenderOptions> options;
   for (const Candidate& c : candidates) options.push_back(c.options), table.labels.push_back(c.label);

@@ -8,6 +8,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "classify/cone_batch.h"
 #include "core/dot3-inl.h"
 #include "core/mask_bits-inl.h"
@@ -360,9 +361,9 @@ namespace fastshade {
 
 HWY_EXPORT(DecidePathsBatch);
 
-void decide_paths_batch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
+void decide_paths_batch(SimdTarget simd, const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
                         ShadePath* path, uint64_t* lights) {
-  HWY_DYNAMIC_DISPATCH(DecidePathsBatch)(terms, normals, count, path, lights);
+  FASTSHADE_DISPATCH(simd, DecidePathsBatch)(terms, normals, count, path, lights);
 }
 
 }  // namespace fastshade

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/simd_target.h"
 #include "frame/shade_path.h"
 
 namespace fastshade {
@@ -36,8 +37,8 @@ struct NormalsSoA {
 
 // What the lanes settled, per triangle: path[i] as classify() decides it (lights[i]: its
 // lights_with_highlight where Specular), Unclassified where only classify() can. Runs on the
-// process's ISA (exec/isa.h).
-void decide_paths_batch(const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
+// ISA `simd` (core/simd_target.h).
+void decide_paths_batch(SimdTarget simd, const ConeBatchTerms& terms, const NormalsSoA& normals, std::size_t count,
                         ShadePath* path, uint64_t* lights);
 
 }  // namespace fastshade

@@ -7,9 +7,9 @@
 #include <tbb/parallel_for.h>
 
 #include "classify/classifier.h"
+#include "core/simd_target.h"
 #include "exec/frame_profile.h"
 #include "exec/frame_stats.h"
-#include "exec/isa.h"
 #include "exec/resolve_options.h"
 #include "exec/tile_executor.h"
 #include "exec/tile_size.h"
@@ -76,12 +76,13 @@ struct Renderer::Impl {
         xf(view_transform(scene)),
         arena(o.threads) {
     const RenderChoices& c = choices;
-    select_isa(o.isa);
+    frame.simd = resolved.simd;
+    setup.simd = frame.simd;
     frame.grid = make_grid(scene.width, scene.height,
                            resolve_tile_px(o.tile_px, scene.width, scene.height, arena.threads()));
     frame.shade = shade_constants(scene, xf, c);
     needs = method->needs(frame.shade);
-    draw = method->select(frame.shade, c);
+    draw = method->select(frame.simd, frame.shade, c);
     // Without lights `auto` has nothing to classify (every colour is the ambient one).
     classified = method->classifies && !frame.shade.lights.empty();
     if (classified) {
@@ -110,7 +111,7 @@ struct Renderer::Impl {
     stats.threads = arena.threads();
     stats.tile = frame.grid.tile_px;
     stats.method = o.method;
-    stats.isa = active_isa();
+    stats.isa = simd_target_name(frame.simd);
   }
 
   // Every pixel is written (empty tiles get the background), so a buffer of the right size
@@ -127,7 +128,7 @@ struct Renderer::Impl {
       const auto t0 = Clock::now();
       {
         ItemTimer timer(profile ? &profile->vertex_stage_ns : nullptr);
-        objects_culled = run_vertex_stage(geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
+        objects_culled = run_vertex_stage(frame.simd, geometry, xf, setup.viewport, needs, frame.shade, vertices, frame.attrs);
         if (setup.occlusion) plan_self_occlusion(geometry, closures, vertices, occlusion);
       }
       const uint32_t n_tris = static_cast<uint32_t>(geometry.triangles.size());

@@ -48,6 +48,7 @@ ResolvedOptions resolve(const RenderOptions& o) {
                                    ", or 0 (sized from the image and threads), got " + std::to_string(o.tile_px));
   ResolvedOptions r;
   r.method = &find_method_or_throw(o.method);
+  r.simd = simd_target(o.isa);
   RenderChoices& c = r.choices;
   c.brdf = parse_brdf(o.brdf, "--brdf");
   c.normals = parse_normals(o.normals, "--normals");

@@ -1,6 +1,7 @@
 // RenderOptions, checked and parsed once: the method they name and their typed choices
 // (frame/render_choices.h). validate() is resolve() with the result dropped.
 #pragma once
+#include "core/simd_target.h"
 #include "fastshade/render.h"
 #include "frame/render_choices.h"
 #include "shade/method.h"
@@ -9,6 +10,7 @@ namespace fastshade {
 
 struct ResolvedOptions {
   const Method* method = nullptr;
+  SimdTarget simd;  // --isa
   RenderChoices choices;
 };
 

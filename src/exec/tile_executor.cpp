@@ -47,8 +47,8 @@ std::vector<uint8_t> background_row(uint32_t rgba) {
   return row;
 }
 
-void fill_rect(Image& image, const PixelRect& r, const std::vector<uint8_t>& row) {
-  stream_rows(row.data(), 0, image.rgb.data() + (std::size_t(r.y0) * image.width + r.x0) * 3, image.width * 3,
+void fill_rect(SimdTarget simd, Image& image, const PixelRect& r, const std::vector<uint8_t>& row) {
+  stream_rows(simd, row.data(), 0, image.rgb.data() + (std::size_t(r.y0) * image.width + r.x0) * 3, image.width * 3,
               (r.x1 - r.x0 + 1) * 3, r.y1 - r.y0 + 1);
 }
 
@@ -124,14 +124,14 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
                          std::min((ty + 1) * grid.tile_px, grid.height) - 1};
     const uint32_t begin = frame.tile_begin[tile], end = frame.tile_begin[tile + 1];
     if (begin == end) {  // an empty tile costs only its background
-      fill_rect(image, rect, background_rgb);
+      fill_rect(frame.simd, image, rect, background_rgb);
       return;
     }
     TileBuffers& buffers = scratch_->per_thread.local();
     const int stride = grid.tile_px;
     const int w = rect.x1 - rect.x0 + 1;
     const int h = rect.y1 - rect.y0 + 1;
-    clear_tile(buffers.color.data(), buffers.depth.data(), stride, background, w, h);
+    clear_tile(frame.simd, buffers.color.data(), buffers.depth.data(), stride, background, w, h);
     TileTarget target{buffers.color.data(), buffers.depth.data(), stride, rect.x0,
                       rect.y0, rect, draw.path};
     target.pending = &buffers.queue;
@@ -154,10 +154,10 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
       tile_draw(frame, frame.bin_entries[i], target);
     }
     light_pending(buffers.queue, target);
-    rgba_rows_to_rgb(buffers.color.data(), stride,
+    rgba_rows_to_rgb(frame.simd, buffers.color.data(), stride,
                      image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                      image.width * 3, w, h);
-    TilePixelCounts tile_counts = count_tile_pixels(buffers.depth.data(), buffers.color.data(), stride, w, h,
+    TilePixelCounts tile_counts = count_tile_pixels(frame.simd, buffers.depth.data(), buffers.color.data(), stride, w, h,
                                                     classified && single_path < 0);
     if (single_path >= 0) tile_counts.path[single_path] = tile_counts.covered;
     BackEndCounts drawn;

@@ -9,6 +9,7 @@
 #include <hwy/cache_control.h>
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "core/limits.h"
 #include "exec/tile_io.h"
 
@@ -140,8 +141,8 @@ HWY_EXPORT(RgbaRowsToRgb);
 HWY_EXPORT(CountTilePixels);
 HWY_EXPORT(ClearTile);
 
-void clear_tile(uint32_t* color, float* depth, int stride_px, uint32_t background, int width, int rows) {
-  HWY_DYNAMIC_DISPATCH(ClearTile)(color, depth, stride_px, background, width, rows);
+void clear_tile(SimdTarget simd, uint32_t* color, float* depth, int stride_px, uint32_t background, int width, int rows) {
+  FASTSHADE_DISPATCH(simd, ClearTile)(color, depth, stride_px, background, width, rows);
 }
 
 void clear_tile_scalar(uint32_t* color, float* depth, int stride_px, uint32_t background, int width,
@@ -152,9 +153,9 @@ void clear_tile_scalar(uint32_t* color, float* depth, int stride_px, uint32_t ba
   }
 }
 
-TilePixelCounts count_tile_pixels(const float* depth, const uint32_t* color, int stride_px, int width,
+TilePixelCounts count_tile_pixels(SimdTarget simd, const float* depth, const uint32_t* color, int stride_px, int width,
                                   int rows, bool by_path) {
-  return HWY_DYNAMIC_DISPATCH(CountTilePixels)(depth, color, stride_px, width, rows, by_path);
+  return FASTSHADE_DISPATCH(simd, CountTilePixels)(depth, color, stride_px, width, rows, by_path);
 }
 
 TilePixelCounts count_tile_pixels_scalar(const float* depth, const uint32_t* color, int stride_px,
@@ -170,14 +171,14 @@ TilePixelCounts count_tile_pixels_scalar(const float* depth, const uint32_t* col
   return counts;
 }
 
-void stream_rows(const uint8_t* src, int src_stride_bytes, uint8_t* dst, int dst_stride_bytes,
+void stream_rows(SimdTarget simd, const uint8_t* src, int src_stride_bytes, uint8_t* dst, int dst_stride_bytes,
                  int row_bytes, int rows) {
-  HWY_DYNAMIC_DISPATCH(StreamRows)(src, src_stride_bytes, dst, dst_stride_bytes, row_bytes, rows);
+  FASTSHADE_DISPATCH(simd, StreamRows)(src, src_stride_bytes, dst, dst_stride_bytes, row_bytes, rows);
 }
 
-void rgba_rows_to_rgb(const uint32_t* src, int src_stride_px, uint8_t* dst, int dst_stride_bytes,
+void rgba_rows_to_rgb(SimdTarget simd, const uint32_t* src, int src_stride_px, uint8_t* dst, int dst_stride_bytes,
                       int width, int rows) {
-  HWY_DYNAMIC_DISPATCH(RgbaRowsToRgb)(src, src_stride_px, dst, dst_stride_bytes, width, rows);
+  FASTSHADE_DISPATCH(simd, RgbaRowsToRgb)(src, src_stride_px, dst, dst_stride_bytes, width, rows);
 }
 
 void rgba_rows_to_rgb_scalar(const uint32_t* src, int src_stride_px, uint8_t* dst,

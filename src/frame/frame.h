@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/simd_target.h"
 #include "core/limits.h"
 #include "frame/shade_constants.h"
 #include "frame/shade_path.h"
@@ -103,6 +104,7 @@ struct TileGrid {
 };
 
 struct Frame {
+  SimdTarget simd;                     // the renderer's ISA, for every SIMD entry point
   TileGrid grid;
   ShadeConstants shade;                // lights in view space, materials, background
   AttrArrays attrs;                    // every object's vertices, concatenated

@@ -7,6 +7,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "core/limits.h"
 #include "core/mask_bits-inl.h"
 #include "frame/edge_function.h"
@@ -147,9 +148,9 @@ TriangleDecision decide_triangle(const ScreenVertex& a, const ScreenVertex& b, c
   return out;
 }
 
-void decide_triangles(const TriangleColumns& in, int count, int width, int height, bool cull_back,
+void decide_triangles(SimdTarget simd, const TriangleColumns& in, int count, int width, int height, bool cull_back,
                       TriangleFates& out) {
-  HWY_DYNAMIC_DISPATCH(DecideTriangles)(in, count, width, height, cull_back, out);
+  FASTSHADE_DISPATCH(simd, DecideTriangles)(in, count, width, height, cull_back, out);
 }
 
 void decide_triangles_scalar(const TriangleColumns& in, int count, int width, int height, bool cull_back,

@@ -7,6 +7,7 @@
 #pragma once
 #include <cstdint>
 
+#include "core/simd_target.h"
 #include "front/projection.h"
 
 namespace fastshade {
@@ -46,7 +47,7 @@ struct TriangleFates {
 
 // Triangles 0..count-1 (count <= kFateBlock) on the chosen ISA; decide_triangles_scalar() is
 // its reference, decide_triangle() per triangle.
-void decide_triangles(const TriangleColumns& in, int count, int width, int height, bool cull_back,
+void decide_triangles(SimdTarget simd, const TriangleColumns& in, int count, int width, int height, bool cull_back,
                       TriangleFates& out);
 void decide_triangles_scalar(const TriangleColumns& in, int count, int width, int height, bool cull_back,
                              TriangleFates& out);

@@ -53,7 +53,7 @@ class ChunkBuilder {
             const glm::vec3& n = attrs_.n_view[g.triangles[sources[i]][v]];
             for (int c = 0; c < 3; ++c) normals[3 * v + c][i - run] = n[c];
           }
-        decide_paths_batch(*terms, soa, end - run, planned + run, planned_lights + run);
+        decide_paths_batch(p_.simd, *terms, soa, end - run, planned + run, planned_lights + run);
       }
       run = end;
     }
@@ -84,7 +84,7 @@ class ChunkBuilder {
   void emit_columns(const SceneGeometry& g, const ScreenVertex* screen, const TriangleColumns& columns,
                     const uint32_t* source, int count) {
     TriangleFates fates;
-    decide_triangles(columns, count, p_.viewport.width, p_.viewport.height, p_.cull == Cull::Back, fates);
+    decide_triangles(p_.simd, columns, count, p_.viewport.width, p_.viewport.height, p_.cull == Cull::Back, fates);
     chunk_.dropped += fates.dropped;
     chunk_.culled += fates.culled;
     int kept = 0, hidden = 0;  // counted here: the chunk's counters in the loop made a chain of stores and loads

@@ -15,6 +15,7 @@
 namespace fastshade {
 
 struct SetupParams {
+  SimdTarget simd;  // the renderer's ISA
   Viewport viewport;
   Cull cull = Cull::None;
   bool with_attrs = false;  // clipping interpolates attributes only if the method reads them

@@ -37,7 +37,7 @@ bool outside_frustum(const glm::mat4& model_to_clip, const glm::vec3& lo, const 
 
 }  // namespace
 
-int run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const Viewport& vp,
+int run_vertex_stage(SimdTarget simd, const SceneGeometry& g, const ViewTransform& xf, const Viewport& vp,
                       const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
                       AttrArrays& attrs) {
   const std::size_t n = g.positions.size();
@@ -72,12 +72,12 @@ int run_vertex_stage(const SceneGeometry& g, const ViewTransform& xf, const View
           glm::vec3 n_batch[kBatch], pos_batch[kBatch];
           for (uint32_t first = r.begin(); first < r.end(); first += kBatch) {
             const uint32_t count = std::min(kBatch, r.end() - first);
-            transform_vertices(transform, &g.positions[first], lanes_need_normals ? &g.normals[first] : nullptr, count,
+            transform_vertices(simd, transform, &g.positions[first], lanes_need_normals ? &g.normals[first] : nullptr, count,
                                {&out.clip[first], &out.screen[first], &out.flags[first], n_batch, pos_batch});
             if (needs.normal) std::copy_n(n_batch, count, &attrs.n_view[first]);
             if (needs.position) std::copy_n(pos_batch, count, &attrs.pos_view[first]);
             if (needs.color)
-              light_vertices(n_batch, pos_batch, count, material, shade, !needs.diffuse_color,
+              light_vertices(simd, n_batch, pos_batch, count, material, shade, !needs.diffuse_color,
                              attrs.color.data() + first);
           }
         });

@@ -37,7 +37,7 @@ struct ProjectedVertices {
 // object whose bounding box lies wholly outside one frustum plane is not transformed: its
 // vertices get every outcode bit, so setup culls its triangles at once. Returns how many
 // objects were left out so.
-int run_vertex_stage(const SceneGeometry& geometry, const ViewTransform& xf, const Viewport& vp,
+int run_vertex_stage(SimdTarget simd, const SceneGeometry& geometry, const ViewTransform& xf, const Viewport& vp,
                       const AttrNeeds& needs, const ShadeConstants& shade, ProjectedVertices& out,
                       AttrArrays& attrs);
 

@@ -8,6 +8,8 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
+
 #include <glm/geometric.hpp>
 
 #include "front/vertex_transform.h"
@@ -98,9 +100,9 @@ namespace fastshade {
 
 HWY_EXPORT(TransformVertices);
 
-void transform_vertices(const VertexTransform& xf, const glm::vec3* positions, const glm::vec3* normals,
+void transform_vertices(SimdTarget simd, const VertexTransform& xf, const glm::vec3* positions, const glm::vec3* normals,
                         std::size_t count, const VertexOutputs& out) {
-  HWY_DYNAMIC_DISPATCH(TransformVertices)(xf, positions, normals, count, out);
+  FASTSHADE_DISPATCH(simd, TransformVertices)(xf, positions, normals, count, out);
 }
 
 void transform_vertices_scalar(const VertexTransform& xf, const glm::vec3* positions, const glm::vec3* normals,

@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/simd_target.h"
 #include "front/projection.h"
 
 namespace fastshade {
@@ -24,7 +25,7 @@ struct VertexTransform {
 // Vertices [0, count): clip[i], flags[i] and, where the vertex needs no clipping, screen[i]
 // (elsewhere screen[i] is unspecified; setup never reads it). With normals (may be null):
 // n_view[i] = normalize(normal_matrix * normals[i]) and pos_view[i], the view-space position.
-// SIMD lanes on the process's ISA (exec/isa.h), bit for bit the scalar reference: glm's
+// SIMD lanes on the ISA `simd` (core/simd_target.h), bit for bit the scalar reference: glm's
 // operation order, no FMA, the projection in double.
 struct VertexOutputs {
   glm::vec4* clip;
@@ -33,7 +34,7 @@ struct VertexOutputs {
   glm::vec3* n_view;    // written if normals is not null
   glm::vec3* pos_view;  // written if normals is not null
 };
-void transform_vertices(const VertexTransform& xf, const glm::vec3* positions, const glm::vec3* normals,
+void transform_vertices(SimdTarget simd, const VertexTransform& xf, const glm::vec3* positions, const glm::vec3* normals,
                         std::size_t count, const VertexOutputs& out);
 
 // The scalar reference: glm and project() (front/projection.h), vertex by vertex.

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/simd_target.h"
 #include "frame/brdf_params.h"
 
 namespace fastshade {
@@ -29,8 +30,8 @@ float eval_brdf_one(const BrdfParams& p, float n_dot_h);
 // same order. Inputs are N.H values, any float; outputs are in [0, 1], 0 for NaN.
 void eval_brdf_scalar(const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);
 
-// The SIMD kernel on the process's chosen ISA (exec/isa.h), for tests and tables.
-void eval_brdf(const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);
+// The SIMD kernel on the ISA `simd` (core/simd_target.h), for tests and tables.
+void eval_brdf(SimdTarget simd, const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);
 
 // cos^n(gamma) exactly, in double, for c = cos(gamma) (0 for c <= 0).
 double cos_power(double c, double n);

@@ -5,6 +5,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "light/brdf-inl.h"
 #include "light/brdf_variants.h"
 
@@ -38,8 +39,8 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace fastshade {
 HWY_EXPORT(EvalBrdf);
-void eval_brdf(const BrdfParams& p, const float* c, float* out, std::size_t count) {
-  HWY_DYNAMIC_DISPATCH(EvalBrdf)(p, c, out, count);
+void eval_brdf(SimdTarget simd, const BrdfParams& p, const float* c, float* out, std::size_t count) {
+  FASTSHADE_DISPATCH(simd, EvalBrdf)(p, c, out, count);
 }
 }  // namespace fastshade
 #endif

@@ -8,6 +8,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "core/dot3-inl.h"
 #include "light/brdf-inl.h"
 #include "light/brdf_variants.h"
@@ -85,11 +86,11 @@ namespace fastshade {
 
 HWY_EXPORT(LightVertices);
 
-void light_vertices(const glm::vec3* n_view, const glm::vec3* pos_view, std::size_t count,
+void light_vertices(SimdTarget simd, const glm::vec3* n_view, const glm::vec3* pos_view, std::size_t count,
                     const MaterialConstants& m, const ShadeConstants& k, bool specular, glm::vec3* color) {
   if (k.local_viewer || (specular && m.shade_in_double))
     return light_vertices_scalar(n_view, pos_view, count, m, k, specular, color);
-  HWY_DYNAMIC_DISPATCH(LightVertices)(n_view, count, m, k, specular, color);
+  FASTSHADE_DISPATCH(simd, LightVertices)(n_view, count, m, k, specular, color);
 }
 
 void light_vertices_scalar(const glm::vec3* n_view, const glm::vec3* pos_view, std::size_t count,

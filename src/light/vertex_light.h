@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/simd_target.h"
 #include "frame/shade_constants.h"
 
 namespace fastshade {
@@ -15,7 +16,7 @@ namespace fastshade {
 // infinite viewer, normalize(-pos_view[i]) for a local one (pos_view may be null otherwise).
 // Lanes for an infinite viewer and a material lit in float; the scalar loop otherwise (a local
 // viewer's normalisation and a material lit in double have no SIMD twin).
-void light_vertices(const glm::vec3* n_view, const glm::vec3* pos_view, std::size_t count,
+void light_vertices(SimdTarget simd, const glm::vec3* n_view, const glm::vec3* pos_view, std::size_t count,
                     const MaterialConstants& m, const ShadeConstants& k, bool specular, glm::vec3* color);
 
 // The scalar reference: vertex_color() for each vertex.

@@ -6,6 +6,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "raster/row_masks-inl.h"
 #include "raster/row_masks.h"
 
@@ -44,12 +45,12 @@ namespace fastshade {
 HWY_EXPORT(RowMasksFn);
 HWY_EXPORT(BoxMasksFn);
 
-int row_masks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
-  return HWY_DYNAMIC_DISPATCH(RowMasksFn)(te, rect, bits);
+int row_masks(SimdTarget simd, const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
+  return FASTSHADE_DISPATCH(simd, RowMasksFn)(te, rect, bits);
 }
 
-int box_masks(const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
-  return HWY_DYNAMIC_DISPATCH(BoxMasksFn)(te, rect, bits);
+int box_masks(SimdTarget simd, const TriangleEdges& te, const PixelRect& rect, uint32_t* bits) {
+  return FASTSHADE_DISPATCH(simd, BoxMasksFn)(te, rect, bits);
 }
 
 }  // namespace fastshade

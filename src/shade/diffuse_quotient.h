@@ -11,6 +11,7 @@
 #pragma once
 #include <glm/vec3.hpp>
 
+#include "core/simd_target.h"
 #include "raster/planes.h"
 #include "raster/spans.h"
 #include "shade/span_kernels.h"
@@ -49,10 +50,10 @@ bool set_up_diffuse_quotient(const PhongSpanInput& in, const Barycentrics& bary,
 PhongColor diffuse_quotient_color_scalar(const PhongSpanInput& in, const DiffuseQuotient& dq,
                                          const PixelOffsets& o);
 
-// A row span shaded with the quotient: scalar reference and the SIMD kernel on the process's ISA.
+// A row span shaded with the quotient: scalar reference and the SIMD kernel on the ISA `simd`.
 void diffuse_quotient_span_scalar(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0,
                                   int x1, RowTarget row);
-void diffuse_quotient_span(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
+void diffuse_quotient_span(SimdTarget simd, const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
                            RowTarget row);
 
 }  // namespace fastshade

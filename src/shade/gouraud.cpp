@@ -9,6 +9,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "light/lighting.h"
 #include "shade/methods.h"
 #include "shade/planes_over_w-inl.h"
@@ -95,16 +96,16 @@ AttrNeeds gouraud_needs(const ShadeConstants& shade) {
   return {.normal = shade.two_sided, .color = true, .position = shade.two_sided && shade.local_viewer};
 }
 
-DrawTriangleFn select_gouraud(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectGouraud)(shade.srgb, true);
+DrawTriangleFn select_gouraud(SimdTarget simd, const ShadeConstants& shade) {
+  return FASTSHADE_DISPATCH(simd, SelectGouraud)(shade.srgb, true);
 }
 
-DrawTriangleFn select_gouraud_diffuse(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectGouraud)(shade.srgb, false);
+DrawTriangleFn select_gouraud_diffuse(SimdTarget simd, const ShadeConstants& shade) {
+  return FASTSHADE_DISPATCH(simd, SelectGouraud)(shade.srgb, false);
 }
 
-void gouraud_span(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row) {
-  HWY_DYNAMIC_DISPATCH(GouraudSpan)(in, srgb, py, x0, x1, row);
+void gouraud_span(SimdTarget simd, const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row) {
+  FASTSHADE_DISPATCH(simd, GouraudSpan)(in, srgb, py, x0, x1, row);
 }
 
 }  // namespace fastshade

@@ -10,6 +10,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "light/brdf_variants.h"
 #include "classify/segment_step.h"
 #include "shade/methods.h"
@@ -232,12 +233,12 @@ namespace fastshade {
 HWY_EXPORT(SelectHybrid);
 HWY_EXPORT(HybridSpan);
 
-DrawTriangleFn select_hybrid(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectHybrid)(shade.local_viewer, shade.brdf.kind);
+DrawTriangleFn select_hybrid(SimdTarget simd, const ShadeConstants& shade) {
+  return FASTSHADE_DISPATCH(simd, SelectHybrid)(shade.local_viewer, shade.brdf.kind);
 }
 
-void hybrid_span(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row) {
-  HWY_DYNAMIC_DISPATCH(HybridSpan)(in, run, py, x0, x1, row);
+void hybrid_span(SimdTarget simd, const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row) {
+  FASTSHADE_DISPATCH(simd, HybridSpan)(in, run, py, x0, x1, row);
 }
 
 }  // namespace fastshade

@@ -13,9 +13,9 @@ SegmentSteps steps(const RenderChoices&) {
   return kSteps;
 }
 
-template <DrawTriangleFn (*kSelect)(const ShadeConstants&)>
-TileDraw select_one(const ShadeConstants& shade, const RenderChoices&) {
-  return {kSelect(shade)};
+template <DrawTriangleFn (*kSelect)(SimdTarget, const ShadeConstants&)>
+TileDraw select_one(SimdTarget simd, const ShadeConstants& shade, const RenderChoices&) {
+  return {kSelect(simd, shade)};
 }
 
 const std::array kMethods = {

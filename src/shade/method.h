@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/simd_target.h"
 #include "frame/frame.h"
 #include "frame/method_needs.h"
 #include "frame/render_choices.h"
@@ -50,7 +51,7 @@ struct Method {
   std::string_view summary;
   AttrNeeds (*needs)(const ShadeConstants& shade);
   // Chooses the variant for this frame (ISA, viewer, sRGB...): decided once, outside loops.
-  TileDraw (*select)(const ShadeConstants& shade, const RenderChoices& choices);
+  TileDraw (*select)(SimdTarget simd, const ShadeConstants& shade, const RenderChoices& choices);
   // Why these choices make no sense with this method ("--brdf: ..."), or "" if they do.
   std::string (*refuse)(const RenderChoices& choices);
   // Whether the front end classifies triangles into shading paths for this method (and the

@@ -1,5 +1,6 @@
 // Entry points of each shading method, for the registry (method.cpp) only.
 #pragma once
+#include "core/simd_target.h"
 #include "shade/method.h"
 
 namespace fastshade {
@@ -8,12 +9,12 @@ AttrNeeds reference_needs(const ShadeConstants& shade);
 // The yardstick's drawer: also the float methods' fallback for a material whose highlight
 // float cannot hold (MaterialConstants::shade_in_double), decided per triangle at setup.
 void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& target);
-DrawTriangleFn select_reference(const ShadeConstants& shade);
+DrawTriangleFn select_reference(SimdTarget simd, const ShadeConstants& shade);  // scalar: ignores simd
 std::string reference_refuses(const RenderChoices& choices);
 
 AttrNeeds phong_needs(const ShadeConstants& shade);
-DrawTriangleFn select_phong(const ShadeConstants& shade);
-DrawTriangleFn select_phong_normals(const ShadeConstants& shade);  // --normals other than normalize
+DrawTriangleFn select_phong(SimdTarget simd, const ShadeConstants& shade);
+DrawTriangleFn select_phong_normals(SimdTarget simd, const ShadeConstants& shade);  // --normals other than normalize
 
 // Methods that interpolate no per-pixel normal refuse --normals.
 std::string refuses_normals(const RenderChoices& choices);
@@ -22,18 +23,18 @@ std::string refuses_normals(const RenderChoices& choices);
 inline std::string accepts_all(const RenderChoices&) { return {}; }
 
 AttrNeeds gouraud_needs(const ShadeConstants& shade);
-DrawTriangleFn select_gouraud(const ShadeConstants& shade);
+DrawTriangleFn select_gouraud(SimdTarget simd, const ShadeConstants& shade);
 
 // `auto`'s paths without a highlight: diffuse-only Gouraud, and per-pixel diffuse (normalised
 // per pixel, or by --normals adaptive|equal-angle).
-DrawTriangleFn select_gouraud_diffuse(const ShadeConstants& shade);
-DrawTriangleFn select_phong_diffuse(const ShadeConstants& shade);
-DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants& shade);
+DrawTriangleFn select_gouraud_diffuse(SimdTarget simd, const ShadeConstants& shade);
+DrawTriangleFn select_phong_diffuse(SimdTarget simd, const ShadeConstants& shade);
+DrawTriangleFn select_phong_normals_diffuse(SimdTarget simd, const ShadeConstants& shade);
 
 AttrNeeds auto_needs(const ShadeConstants& shade);
-TileDraw select_auto(const ShadeConstants& shade, const RenderChoices& choices);
+TileDraw select_auto(SimdTarget simd, const ShadeConstants& shade, const RenderChoices& choices);
 SegmentSteps auto_segment_steps(const RenderChoices& choices);
 
-DrawTriangleFn select_hybrid(const ShadeConstants& shade);
+DrawTriangleFn select_hybrid(SimdTarget simd, const ShadeConstants& shade);
 
 }  // namespace fastshade

@@ -7,6 +7,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "light/brdf_variants.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/methods.h"
@@ -69,26 +70,26 @@ AttrNeeds phong_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};
 }
 
-DrawTriangleFn select_phong(const ShadeConstants& shade) {
-  if (shade.normals != SpanNormals::Normalize) return select_phong_normals(shade);
-  return HWY_DYNAMIC_DISPATCH(SelectPhong)(shade.local_viewer, shade.brdf.kind);
+DrawTriangleFn select_phong(SimdTarget simd, const ShadeConstants& shade) {
+  if (shade.normals != SpanNormals::Normalize) return select_phong_normals(simd, shade);
+  return FASTSHADE_DISPATCH(simd, SelectPhong)(shade.local_viewer, shade.brdf.kind);
 }
 
-DrawTriangleFn select_phong_diffuse(const ShadeConstants&) {  // the output curve is read per frame
-  return HWY_DYNAMIC_DISPATCH(SelectPhongDiffuse)();
+DrawTriangleFn select_phong_diffuse(SimdTarget simd, const ShadeConstants&) {  // the output curve is read per frame
+  return FASTSHADE_DISPATCH(simd, SelectPhongDiffuse)();
 }
 
-void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
-  HWY_DYNAMIC_DISPATCH(PhongSpan)(in, py, x0, x1, row);
+void phong_span(SimdTarget simd, const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
+  FASTSHADE_DISPATCH(simd, PhongSpan)(in, py, x0, x1, row);
 }
 
-void diffuse_quotient_span(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
+void diffuse_quotient_span(SimdTarget simd, const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
                            RowTarget row) {
-  HWY_DYNAMIC_DISPATCH(DiffuseQuotientSpan)(in, dq, py, x0, x1, row);
+  FASTSHADE_DISPATCH(simd, DiffuseQuotientSpan)(in, dq, py, x0, x1, row);
 }
 
-void light_pixel_queue(PixelQueue& queue, const TileTarget& target, bool all) {
-  HWY_DYNAMIC_DISPATCH(LightPixelQueue)(queue, target, all);
+void light_pixel_queue(SimdTarget simd, PixelQueue& queue, const TileTarget& target, bool all) {
+  FASTSHADE_DISPATCH(simd, LightPixelQueue)(queue, target, all);
 }
 
 }  // namespace fastshade

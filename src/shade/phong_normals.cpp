@@ -8,6 +8,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "light/brdf_variants.h"
 #include "shade/methods.h"
 #include "shade/normal_blocks.h"
@@ -77,17 +78,17 @@ HWY_EXPORT(SelectPhongNormals);
 HWY_EXPORT(NormalsSpan);
 HWY_EXPORT(SelectPhongNormalsDiffuse);
 
-DrawTriangleFn select_phong_normals(const ShadeConstants& shade) {
-  return HWY_DYNAMIC_DISPATCH(SelectPhongNormals)(shade.local_viewer, shade.brdf.kind);
+DrawTriangleFn select_phong_normals(SimdTarget simd, const ShadeConstants& shade) {
+  return FASTSHADE_DISPATCH(simd, SelectPhongNormals)(shade.local_viewer, shade.brdf.kind);
 }
 
-DrawTriangleFn select_phong_normals_diffuse(const ShadeConstants&) {  // as select_phong_diffuse
-  return HWY_DYNAMIC_DISPATCH(SelectPhongNormalsDiffuse)();
+DrawTriangleFn select_phong_normals_diffuse(SimdTarget simd, const ShadeConstants&) {  // as select_phong_diffuse
+  return FASTSHADE_DISPATCH(simd, SelectPhongNormalsDiffuse)();
 }
 
-void normals_span(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+void normals_span(SimdTarget simd, const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
                   int x0, int x1, RowTarget row) {
-  HWY_DYNAMIC_DISPATCH(NormalsSpan)(in, mode, tol, run, py, x0, x1, row);
+  FASTSHADE_DISPATCH(simd, NormalsSpan)(in, mode, tol, run, py, x0, x1, row);
 }
 
 }  // namespace fastshade

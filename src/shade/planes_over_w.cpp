@@ -4,6 +4,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/dispatch.h"
 #include "shade/planes_over_w-inl.h"
 #include "shade/planes_over_w.h"
 
@@ -24,8 +25,8 @@ namespace fastshade {
 
 HWY_EXPORT(PlanesOverWFn);
 
-void planes_over_w(const Barycentrics& b, const glm::vec3 v[3], double scale, const float inv_w[3], Plane out[4]) {
-  HWY_DYNAMIC_DISPATCH(PlanesOverWFn)(b, v, scale, inv_w, out);
+void planes_over_w(SimdTarget simd, const Barycentrics& b, const glm::vec3 v[3], double scale, const float inv_w[3], Plane out[4]) {
+  FASTSHADE_DISPATCH(simd, PlanesOverWFn)(b, v, scale, inv_w, out);
 }
 
 }  // namespace fastshade

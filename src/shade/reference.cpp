@@ -54,7 +54,7 @@ AttrNeeds reference_needs(const ShadeConstants& shade) {
   return {.normal = true, .color = false, .position = shade.local_viewer};
 }
 
-DrawTriangleFn select_reference(const ShadeConstants&) { return draw_reference; }
+DrawTriangleFn select_reference(SimdTarget, const ShadeConstants&) { return draw_reference; }
 
 std::string reference_refuses(const RenderChoices& c) {
   if (c.normals != SpanNormals::Normalize)

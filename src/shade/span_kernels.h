@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "core/simd_target.h"
 #include "frame/shade_constants.h"
 #include "raster/planes.h"
 #include "frame/shade_constants.h"
@@ -90,15 +91,15 @@ struct HybridRun {
 };
 void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
 
-// The SIMD kernels on the process's ISA (exec/isa.h), for tests and benchmarks.
-void gouraud_span(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
-void phong_span(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
-void hybrid_span(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
+// The SIMD kernels on the ISA `simd` (core/simd_target.h), for tests and benchmarks.
+void gouraud_span(SimdTarget simd, const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
+void phong_span(SimdTarget simd, const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
+void hybrid_span(SimdTarget simd, const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
 
 // --normals adaptive | equal-angle (shade/normal_blocks.h); run.step is unused.
 void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
                          int py, int x0, int x1, RowTarget row);
-void normals_span(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+void normals_span(SimdTarget simd, const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
                   int x0, int x1, RowTarget row);
 
 // quantize() (light/lighting.h) as the SIMD kernels compute it: the same float operations,

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "classify/classifier.h"
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "support/random_unit.h"
 
 namespace fastshade {
@@ -59,7 +59,7 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
                               {33, 20, 0.5f, {1.0 / 510.0, 2.0 / 255.0, false}}};
   int isas = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     ++isas;
     for (const Setting& s : settings) {
       const ShadeConstants k = scene(s.lights, s.shininess, s.ks);
@@ -80,7 +80,7 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
             for (int c = 0; c < 3; ++c) soa[(3 * v + c) * count + t] = normals[3 * t + v][c];
         std::vector<ShadePath> path(count + 1, ShadePath::Unclassified);  // a sentinel past the end
         std::vector<uint64_t> light(count + 1, 99);
-        decide_paths_batch(*terms, view, count, path.data(), light.data());
+        decide_paths_batch(simd, *terms, view, count, path.data(), light.data());
         ASSERT_EQ(path[count], ShadePath::Unclassified) << isa << ": wrote past the batch";
         ASSERT_EQ(light[count], 99) << isa << ": wrote past the batch";
         for (std::size_t t = 0; t < count; ++t) {
@@ -112,7 +112,6 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
       }
     }
   }
-  select_isa("best");
   EXPECT_GE(isas, 1);
 }
 

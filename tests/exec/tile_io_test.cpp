@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/limits.h"
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "exec/tile_io.h"
 #include "fastshade/image.h"
 
@@ -20,19 +20,18 @@ TEST(TileIo, RgbaRowsToRgbMatchesScalarOnEveryIsaAndWidth) {
   std::vector<uint32_t> src(std::size_t(stride) * rows);
   for (uint32_t& p : src) p = rng();
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (int width = 0; width <= 2 * 64 + 1; ++width) {
       const int dst_stride = 3 * stride + 7;
-      std::vector<uint8_t> simd(std::size_t(dst_stride) * rows, 0xAB), scalar = simd;
-      rgba_rows_to_rgb(src.data(), stride, simd.data(), dst_stride, width, rows);
+      std::vector<uint8_t> lanes(std::size_t(dst_stride) * rows, 0xAB), scalar = lanes;
+      rgba_rows_to_rgb(simd, src.data(), stride, lanes.data(), dst_stride, width, rows);
       rgba_rows_to_rgb_scalar(src.data(), stride, scalar.data(), dst_stride, width, rows);
-      ASSERT_EQ(simd, scalar) << isa << " width " << width;
+      ASSERT_EQ(lanes, scalar) << isa << " width " << width;
       for (int y = 0; y < rows; ++y)
         for (int b = 3 * width; b < dst_stride; ++b)
-          ASSERT_EQ(simd[std::size_t(y) * dst_stride + b], 0xAB) << isa << " wrote past the row";
+          ASSERT_EQ(lanes[std::size_t(y) * dst_stride + b], 0xAB) << isa << " wrote past the row";
     }
   }
-  select_isa("best");
 }
 
 // The empty-tile fill: one source row (stride 0) or several into framebuffer rows at every
@@ -44,19 +43,18 @@ TEST(TileIo, StreamRowsCopiesEveryRowAtEveryAlignment) {
   std::vector<uint8_t> src(std::size_t(3 * 256) * rows);
   for (uint8_t& b : src) b = static_cast<uint8_t>(rng());
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (int src_stride : {0, 3 * 256})
       for (int offset = 0; offset < 64; ++offset)
         for (int bytes = 0; bytes <= 3 * 256; bytes += (bytes < 200 ? 1 : 61)) {
           std::vector<uint8_t> dst(std::size_t(dst_stride) * rows + offset, 0xAB), expected = dst;
-          stream_rows(src.data(), src_stride, dst.data() + offset, dst_stride, bytes, rows);
+          stream_rows(simd, src.data(), src_stride, dst.data() + offset, dst_stride, bytes, rows);
           for (int y = 0; y < rows; ++y)
             std::copy_n(src.begin() + std::ptrdiff_t(y) * src_stride, bytes,
                         expected.begin() + offset + std::ptrdiff_t(y) * dst_stride);
           ASSERT_EQ(dst, expected) << isa << " src stride " << src_stride << " offset " << offset << " bytes " << bytes;
         }
   }
-  select_isa("best");
 }
 
 // Counting a tile's drawn pixels, per path: SIMD equals scalar on every ISA for widths 0..2W+1
@@ -75,19 +73,18 @@ TEST(TileIo, CountTilePixelsMatchesScalarOnEveryIsaAndWidth) {
   }
   long long any_path = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (bool by_path : {false, true})
       for (int width = 0; width <= 2 * 16 + 1; ++width) {
-        const TilePixelCounts simd = count_tile_pixels(depth.data(), color.data(), stride, width, rows, by_path);
+        const TilePixelCounts lanes = count_tile_pixels(simd, depth.data(), color.data(), stride, width, rows, by_path);
         const TilePixelCounts scalar = count_tile_pixels_scalar(depth.data(), color.data(), stride, width, rows, by_path);
-        ASSERT_EQ(simd.covered, scalar.covered) << isa << " width " << width;
+        ASSERT_EQ(lanes.covered, scalar.covered) << isa << " width " << width;
         for (int p = 0; p < kShadePathCount; ++p) {
-          ASSERT_EQ(simd.path[p], scalar.path[p]) << isa << " width " << width << " path " << p;
+          ASSERT_EQ(lanes.path[p], scalar.path[p]) << isa << " width " << width << " path " << p;
           any_path += scalar.path[p];
         }
       }
   }
-  select_isa("best");
   EXPECT_GT(any_path, 0);
 }
 
@@ -96,11 +93,11 @@ TEST(TileIo, CountTilePixelsMatchesScalarOnEveryIsaAndWidth) {
 TEST(TileIo, ClearTileMatchesScalarOnEveryIsaAndWidth) {
   const int stride = 48, rows = 3;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (int width = 0; width <= 2 * 16 + 1; ++width) {
       std::vector<uint32_t> color(std::size_t(stride) * rows, 0xABABABABu), color_scalar = color;
       std::vector<float> depth(color.size(), -3.0f), depth_scalar = depth;
-      clear_tile(color.data(), depth.data(), stride, 0xFF102030u, width, rows);
+      clear_tile(simd, color.data(), depth.data(), stride, 0xFF102030u, width, rows);
       clear_tile_scalar(color_scalar.data(), depth_scalar.data(), stride, 0xFF102030u, width, rows);
       ASSERT_EQ(color, color_scalar) << isa << " width " << width;
       ASSERT_EQ(depth, depth_scalar) << isa << " width " << width;
@@ -112,7 +109,6 @@ TEST(TileIo, ClearTileMatchesScalarOnEveryIsaAndWidth) {
         }
     }
   }
-  select_isa("best");
 }
 
 // The framebuffer starts on a cache line whatever its size (malloc's large blocks start 16

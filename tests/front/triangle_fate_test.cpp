@@ -8,7 +8,7 @@
 #include <random>
 
 #include "core/limits.h"
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "front/triangle_fate.h"
 
 namespace fastshade {
@@ -73,13 +73,13 @@ TEST(TriangleFate, LanesMatchScalarOnEveryIsaAndLength) {
   lengths.push_back(kFateBlock);
   int kept = 0, back = 0, dropped = 0, culled = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (int round = 0; round < 40; ++round)
       for (int count : lengths)
         for (bool cull_back : {false, true}) {
           const TriangleColumns in = random_block(rng, count);
           TriangleFates got, want;
-          decide_triangles(in, count, kWidth, kHeight, cull_back, got);
+          decide_triangles(simd, in, count, kWidth, kHeight, cull_back, got);
           decide_triangles_scalar(in, count, kWidth, kHeight, cull_back, want);
           expect_equal(got, want, count, isa + " count " + std::to_string(count) + (cull_back ? " cull" : ""));
           for (int w = 0; w < kFateBlock / 64; ++w) {
@@ -90,7 +90,6 @@ TEST(TriangleFate, LanesMatchScalarOnEveryIsaAndLength) {
           culled += want.culled;
         }
   }
-  select_isa("best");
   // Every fate occurs often, so the comparison above exercised each.
   EXPECT_GT(back, 1000);
   EXPECT_GT(kept - back, 1000);

@@ -12,7 +12,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "front/vertex_transform.h"
 
 namespace fastshade {
@@ -59,7 +59,7 @@ TEST(VertexTransform, LanesEqualScalarOnEveryIsa) {
   normals[13] = glm::vec3(0.0f);  // a zero normal: NaN after normalising, in both
   int isas = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     ++isas;
     std::vector<std::pair<std::size_t, std::size_t>> runs;  // (first, count)
     for (std::size_t count = 0; count <= 33; ++count) runs.push_back({0, count});
@@ -67,7 +67,7 @@ TEST(VertexTransform, LanesEqualScalarOnEveryIsa) {
     for (const auto& [first, count] : runs)
       for (bool with_normals : {true, false}) {
         Outputs lanes(n), scalar(n);
-        transform_vertices(xf, &positions[first], with_normals ? &normals[first] : nullptr, count, lanes.view(first));
+        transform_vertices(simd, xf, &positions[first], with_normals ? &normals[first] : nullptr, count, lanes.view(first));
         transform_vertices_scalar(xf, &positions[first], with_normals ? &normals[first] : nullptr, count,
                                   scalar.view(first));
         int projected = 0, clipped = 0;
@@ -94,7 +94,6 @@ TEST(VertexTransform, LanesEqualScalarOnEveryIsa) {
         }
       }
   }
-  select_isa("best");
   EXPECT_GE(isas, 1);
 }
 

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <random>
 
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "fastshade/error.h"
 #include "light/brdf.h"
 
@@ -39,11 +39,14 @@ TEST(Brdf, EveryOutputIsFiniteAndInUnitInterval) {
   for (const BrdfChoice& choice : all_choices())
     for (double n : kShininess) {
       const BrdfParams p = make_brdf(choice, n);
-      for (int simd = 0; simd < 2; ++simd) {
-        (simd ? eval_brdf : eval_brdf_scalar)(p, c.data(), out.data(), c.size());
+      for (int lanes = 0; lanes < 2; ++lanes) {
+        if (lanes)
+          eval_brdf(SimdTarget{}, p, c.data(), out.data(), c.size());
+        else
+          eval_brdf_scalar(p, c.data(), out.data(), c.size());
         for (std::size_t i = 0; i < c.size(); ++i) {
           ASSERT_TRUE(std::isfinite(out[i]) && out[i] >= 0.0f && out[i] <= 1.0f)
-              << brdf_name(choice) << " n=" << n << " c=" << c[i] << " -> " << out[i] << " simd " << simd;
+              << brdf_name(choice) << " n=" << n << " c=" << c[i] << " -> " << out[i] << " lanes " << lanes;
           if (!(c[i] > 0)) {
             ASSERT_EQ(out[i], 0.0f) << brdf_name(choice) << " n=" << n << " c=" << c[i];
           }
@@ -111,24 +114,23 @@ TEST(Brdf, SimdEqualsScalarOnEveryIsaAndTailLength) {
   c[7] = std::numeric_limits<float>::quiet_NaN();
   int isas = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     ++isas;
     for (const BrdfChoice& choice : all_choices())
       for (double n : {1.0, 37.5, 1e4}) {
         const BrdfParams p = make_brdf(choice, n);
         for (std::size_t start = 0; start < 3; ++start)  // unaligned starts
           for (std::size_t len = 0; len <= 2 * 16 + 1; ++len) {
-            std::vector<float> simd(len + 1, -7.0f), scalar(len + 1, -7.0f);
-            eval_brdf(p, c.data() + start, simd.data(), len);
+            std::vector<float> lanes(len + 1, -7.0f), scalar(len + 1, -7.0f);
+            eval_brdf(simd, p, c.data() + start, lanes.data(), len);
             eval_brdf_scalar(p, c.data() + start, scalar.data(), len);
-            ASSERT_EQ(simd[len], -7.0f) << "wrote past the end: " << isa;
+            ASSERT_EQ(lanes[len], -7.0f) << "wrote past the end: " << isa;
             for (std::size_t i = 0; i < len; ++i)
-              ASSERT_LE(std::fabs(simd[i] - scalar[i]), tolerance(choice.kind))
+              ASSERT_LE(std::fabs(lanes[i] - scalar[i]), tolerance(choice.kind))
                   << isa << " " << brdf_name(choice) << " n=" << n << " c=" << c[start + i];
           }
       }
   }
-  select_isa("best");
   EXPECT_GE(isas, 1);
 }
 

@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "light/brdf.h"
 #include "light/vertex_light.h"
 
@@ -39,7 +39,7 @@ TEST(VertexLight, LanesMatchVertexColorOnEveryIsaBrdfAndLength) {
   const ShadeConstants k = two_lights();
   int isas = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     ++isas;
     for (const std::string& brdf : brdf_names())
       for (double n : {1.0, 37.5, 1000.0}) {
@@ -47,24 +47,23 @@ TEST(VertexLight, LanesMatchVertexColorOnEveryIsaBrdfAndLength) {
                                   make_brdf(parse_brdf(brdf, "test"), n)};
         for (bool specular : {true, false})
           for (std::size_t len = 0; len <= 2 * 16 + 1; ++len) {
-            std::vector<glm::vec3> simd(len + 1, glm::vec3(-7.0f)), scalar(len + 1, glm::vec3(-7.0f));
-            light_vertices(normals.data() + 1, nullptr, len, m, k, specular, simd.data());
+            std::vector<glm::vec3> lanes(len + 1, glm::vec3(-7.0f)), scalar(len + 1, glm::vec3(-7.0f));
+            light_vertices(simd, normals.data() + 1, nullptr, len, m, k, specular, lanes.data());
             light_vertices_scalar(normals.data() + 1, nullptr, len, m, k, specular, scalar.data());
-            ASSERT_EQ(simd[len], glm::vec3(-7.0f)) << "wrote past the end: " << isa;
+            ASSERT_EQ(lanes[len], glm::vec3(-7.0f)) << "wrote past the end: " << isa;
             for (std::size_t i = 0; i < len; ++i)
               for (int c = 0; c < 3; ++c) {
-                ASSERT_NEAR(simd[i][c], scalar[i][c], kTolerance)
+                ASSERT_NEAR(lanes[i][c], scalar[i][c], kTolerance)
                     << isa << " " << brdf << " n=" << n << " specular " << specular << " vertex " << i;
-                ASSERT_TRUE(simd[i][c] >= 0.0f && simd[i][c] <= 1.0f);
+                ASSERT_TRUE(lanes[i][c] >= 0.0f && lanes[i][c] <= 1.0f);
               }
             // Without a BRDF approximation in play, the lanes are the scalar arithmetic exactly.
             if (!specular) {
-              for (std::size_t i = 0; i < len; ++i) ASSERT_EQ(simd[i], scalar[i]) << isa << " vertex " << i;
+              for (std::size_t i = 0; i < len; ++i) ASSERT_EQ(lanes[i], scalar[i]) << isa << " vertex " << i;
             }
           }
       }
   }
-  select_isa("best");
   EXPECT_GE(isas, 1);
 }
 
@@ -78,10 +77,10 @@ TEST(VertexLight, LocalViewerAndDoubleMaterialsAreTheScalarColours) {
   for (bool in_double : {false, true}) {
     m.shade_in_double = in_double;
     k.local_viewer = !in_double;
-    std::vector<glm::vec3> simd(2), scalar(2);
-    light_vertices(normals.data(), positions.data(), 2, m, k, true, simd.data());
+    std::vector<glm::vec3> lanes(2), scalar(2);
+    light_vertices(SimdTarget{}, normals.data(), positions.data(), 2, m, k, true, lanes.data());
     light_vertices_scalar(normals.data(), positions.data(), 2, m, k, true, scalar.data());
-    EXPECT_EQ(simd, scalar) << (in_double ? "material in double" : "local viewer");
+    EXPECT_EQ(lanes, scalar) << (in_double ? "material in double" : "local viewer");
   }
 }
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <random>
 
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "raster/row_masks.h"
 
 namespace fastshade {
@@ -36,7 +36,7 @@ TriangleEdges random_edges(std::mt19937& rng, int64_t extent_fx, bool on_centres
 TEST(RowMasks, SimdEqualsScalarOnEveryIsa) {
   int isas = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     ++isas;
     std::mt19937 rng(7);
     // Triangles from a few pixels to the guard band's 2^24 doubled units.
@@ -49,11 +49,11 @@ TEST(RowMasks, SimdEqualsScalarOnEveryIsa) {
         for (int width = 0; width < kNarrowRectPx; ++width) {
           const int x0 = 500 + offset(rng), y0 = 300 + offset(rng);
           const PixelRect rect{x0, y0, x0 + width, y0 + height(rng)};
-          uint32_t simd[64] = {};
-          const int covered = row_masks(te, rect, simd);
+          uint32_t lanes[64] = {};
+          const int covered = row_masks(simd, te, rect, lanes);
           int expected_covered = 0;
           for_each_row_mask(te, rect, [&](int py, uint32_t bits) {
-            ASSERT_EQ(simd[py - rect.y0], bits) << isa << " row " << py - rect.y0 << " width " << width;
+            ASSERT_EQ(lanes[py - rect.y0], bits) << isa << " row " << py - rect.y0 << " width " << width;
             expected_covered += __builtin_popcount(bits);
           });
           ASSERT_EQ(covered, expected_covered) << isa;
@@ -62,7 +62,6 @@ TEST(RowMasks, SimdEqualsScalarOnEveryIsa) {
       }
     EXPECT_GT(covered_total, 10000) << isa << ": the cases must cover pixels to test anything";
   }
-  select_isa("best");
   EXPECT_GE(isas, 1);
 }
 
@@ -80,7 +79,7 @@ PixelRect centre_box(const int64_t x[3], const int64_t y[3]) {
 TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
   int isas = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     ++isas;
     std::mt19937 rng(11);
     std::uniform_int_distribution<int64_t> coord(0, (kBoxExactSpanPx + 1) * kEdgeUnitsPerPixel - 1);
@@ -108,13 +107,13 @@ TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
       std::uniform_int_distribution<int> cx(box.x0, box.x1), cy(box.y0, box.y1);
       const int ax = cx(rng), bx = cx(rng), ay = cy(rng), by = cy(rng);
       for (const PixelRect& rect : {box, PixelRect{std::min(ax, bx), std::min(ay, by), std::max(ax, bx), std::max(ay, by)}}) {
-        uint32_t simd[kBoxExactSpanPx] = {};
-        const int covered = box_masks(te, rect, simd);
+        uint32_t lanes[kBoxExactSpanPx] = {};
+        const int covered = box_masks(simd, te, rect, lanes);
         if (covered < 0) continue;  // wider than this ISA's vector
         ++rects;
         int expected_covered = 0;
         for_each_row_mask(te, rect, [&](int py, uint32_t bits) {
-          ASSERT_EQ(simd[py - rect.y0], bits) << isa << " row " << py - rect.y0;
+          ASSERT_EQ(lanes[py - rect.y0], bits) << isa << " row " << py - rect.y0;
           expected_covered += __builtin_popcount(bits);
         });
         ASSERT_EQ(covered, expected_covered) << isa;
@@ -124,7 +123,6 @@ TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
     EXPECT_GT(rects, 5000) << isa << ": most small rectangles must fit a vector";
     EXPECT_GT(covered_total, 1000) << isa << ": the cases must cover pixels to test anything";
   }
-  select_isa("best");
   EXPECT_GE(isas, 1);
 }
 

@@ -12,7 +12,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "fastshade/compare.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
@@ -58,28 +58,27 @@ TEST(PixelQueue, LightingMatchesScalarOnEveryIsaBrdfAndLength) {
   c.k.lights[1].h_view = glm::normalize(c.k.lights[1].l_view + glm::vec3(0, 0, 1));
   int checked = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (const std::string& brdf : brdf_names())
       for (bool srgb : {false, true}) {
         c.k.srgb = srgb;
         c.m = {glm::vec3(0.6f, 0.5f, 0.4f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(parse_brdf(brdf, "test"), 40.0)};
         for (int count = 0; count <= 2 * 16 + 1; ++count) {
-          PixelQueue simd;
-          fill(simd, count, rng);
-          simd.material = &c.m;
-          simd.shade = &c.k;
-          PixelQueue scalar = simd;
+          PixelQueue lanes;
+          fill(lanes, count, rng);
+          lanes.material = &c.m;
+          lanes.shade = &c.k;
+          PixelQueue scalar = lanes;
           QueueCase a = c, b = c;
-          light_pixel_queue(simd, a.target(), true);
+          light_pixel_queue(simd, lanes, a.target(), true);
           light_pixel_queue_scalar(scalar, b.target());
-          ASSERT_EQ(simd.count, 0);
+          ASSERT_EQ(lanes.count, 0);
           ASSERT_EQ(a.color, b.color) << isa << " " << brdf << " srgb " << srgb << " count " << count;
           ASSERT_EQ(a.depth, c.depth) << "lighting never writes depth";
           ++checked;
         }
       }
   }
-  select_isa("best");
   EXPECT_GT(checked, 0);
 }
 
@@ -90,7 +89,7 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
   c.k.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(1, 1, 2.732f)), glm::vec3(1.0f)});
   c.m = {glm::vec3(0.7f), glm::vec3(0.5f), 32.0f, 32.0, make_brdf(parse_brdf("exact", "test"), 32.0)};
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (int count = 0; count <= 2 * 16 + 1; ++count) {
       PixelQueue q;
       fill(q, count, rng);
@@ -104,14 +103,14 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
       }
       PixelQueue whole = q;
       QueueCase a = c, b = c;
-      light_pixel_queue(whole, a.target(), false);
+      light_pixel_queue(simd, whole, a.target(), false);
       ASSERT_LT(whole.count, 16) << isa << ": at most a partial vector waits";
       ASSERT_LE(whole.count, count) << isa;
-      light_pixel_queue(whole, a.target(), true);
+      light_pixel_queue(simd, whole, a.target(), true);
       // Lit through another path's target (auto does), the entries keep the tag they came with.
       TileTarget untagged = b.target();
       untagged.alpha_xor = 0;
-      light_pixel_queue(q, untagged, true);
+      light_pixel_queue(simd, q, untagged, true);
       ASSERT_EQ(a.color, b.color) << isa << " count " << count;
       if (count >= 2) {
         // Away from the light: ambient only, 0.1 -> level 26, alpha 0xFF ^ 2.
@@ -119,7 +118,6 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
       }
     }
   }
-  select_isa("best");
 }
 
 

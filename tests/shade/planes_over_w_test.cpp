@@ -7,7 +7,7 @@
 #include <cstring>
 #include <random>
 
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "shade/planes_over_w.h"
 
 namespace fastshade {
@@ -18,7 +18,7 @@ bool same_bits(const Plane& a, const Plane& b) { return std::memcmp(&a, &b, size
 TEST(PlanesOverW, EqualsMakePlaneOnEveryIsa) {
   int isas = 0;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     ++isas;
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> lambda(-2.0, 2.0), gradient_exp(-12.0, 3.0);
@@ -43,7 +43,7 @@ TEST(PlanesOverW, EqualsMakePlaneOnEveryIsa) {
       const float scale_f = trial % 2 ? 1.0f : -1.0f;
       for (const double scale : {255.0, static_cast<double>(scale_f)}) {
         Plane got[4];
-        planes_over_w(b, v, scale, inv_w, got);
+        planes_over_w(simd, b, v, scale, inv_w, got);
         for (int c = 0; c < 3; ++c) {
           // What the scalar set-ups compute: Gouraud (255.0 * c) * w, Phong double(s * c) * w.
           auto q = [&](int i) {
@@ -58,7 +58,6 @@ TEST(PlanesOverW, EqualsMakePlaneOnEveryIsa) {
     }
     EXPECT_EQ(planes, 20000 * 2 * 4);
   }
-  select_isa("best");
   EXPECT_GE(isas, 1);
 }
 

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "classify/segment_step.h"
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "frame/edge_function.h"
 #include "light/brdf.h"
 #include "shade/diffuse_quotient.h"
@@ -89,13 +89,12 @@ void expect_same(const std::string& what, std::mt19937& rng, int lsb, Simd simd,
 
 class SpanKernels : public ::testing::Test {
  protected:
-  void TearDown() override { select_isa("best"); }
 };
 
 TEST_F(SpanKernels, GouraudMatchesScalarReferenceOnEveryIsa) {
   std::mt19937 rng(11);
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (int trial = 0; trial < 6; ++trial) {
       const Fixture f = random_triangle(rng);
       std::uniform_real_distribution<float> u(0.0f, 1.3f);  // lit vertices may pass 1
@@ -110,7 +109,7 @@ TEST_F(SpanKernels, GouraudMatchesScalarReferenceOnEveryIsa) {
         // Linear output is the same IEEE arithmetic in both: bit-exact. The sRGB curve's
         // exp2/log2 use FMA where the target has it and std::fma in the reference: 1 LSB.
         expect_same("gouraud " + isa + (srgb ? " srgb" : ""), rng, srgb ? 1 : 0,
-                    [&](RowTarget r, int x0, int x1) { gouraud_span(in, srgb, py, x0, x1, r); },
+                    [&](RowTarget r, int x0, int x1) { gouraud_span(simd, in, srgb, py, x0, x1, r); },
                     [&](RowTarget r, int x0, int x1) { gouraud_span_scalar(in, srgb, py, x0, x1, r); });
     }
   }
@@ -124,7 +123,7 @@ TEST_F(SpanKernels, PhongMatchesScalarReferenceOnEveryIsaBrdfAndViewer) {
   k.lights.push_back({glm::normalize(glm::vec3(-1, 0.2f, 0.5f)), glm::vec3(0), glm::vec3(0.4f, 0.5f, 0.6f)});
   k.lights[1].h_view = glm::normalize(k.lights[1].l_view + glm::vec3(0, 0, 1));
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (const std::string& brdf : brdf_names())
       for (bool local : {false, true}) {
         k.local_viewer = local;
@@ -145,7 +144,7 @@ TEST_F(SpanKernels, PhongMatchesScalarReferenceOnEveryIsaBrdfAndViewer) {
         // rounding (FMA or not, Highway's vs the C library's), never by a whole step but for
         // values that sit on a rounding boundary: at most 1 LSB.
         expect_same("phong " + isa + " " + brdf + (local ? " local" : ""), rng, 1,
-                    [&](RowTarget r, int x0, int x1) { phong_span(in, 100, x0, x1, r); },
+                    [&](RowTarget r, int x0, int x1) { phong_span(simd, in, 100, x0, x1, r); },
                     [&](RowTarget r, int x0, int x1) { phong_span_scalar(in, 100, x0, x1, r); });
       }
   }
@@ -178,7 +177,7 @@ TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
   const OneLight scene;
   int terminator_rows = 0;  // split rows whose N.L changes sign: the per-pixel clamp is exercised
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (int split_light : {-1, 0})
       for (bool specular : {true, false})
       for (int step : {1, 2, 4, 8, 16}) {
@@ -193,7 +192,7 @@ TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
         }
         expect_same("hybrid " + isa + " step " + std::to_string(step) + " split " + std::to_string(split_light) +
                         (specular ? "" : " no specular"), rng, 1,
-                    [&](RowTarget r, int x0, int x1) { hybrid_span(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
+                    [&](RowTarget r, int x0, int x1) { hybrid_span(simd, in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
                     [&](RowTarget r, int x0, int x1) { hybrid_span_scalar(in, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
       }
   }
@@ -204,13 +203,13 @@ TEST_F(SpanKernels, NormalsPathsMatchScalarReferenceOnEveryIsa) {
   std::mt19937 rng(14);
   const OneLight scene;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (SpanNormals mode : {SpanNormals::Adaptive, SpanNormals::EqualAngle})
       for (float tol : {0.0f, hybrid_tolerance(2.0)}) {
         const PhongSpanInput in = scene.random_input(rng, -0.8f, 0.3f);
         const HybridRun run{1, 145, 190};
         expect_same("normals " + isa, rng, 1,
-                    [&](RowTarget r, int x0, int x1) { normals_span(in, mode, tol, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
+                    [&](RowTarget r, int x0, int x1) { normals_span(simd, in, mode, tol, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); },
                     [&](RowTarget r, int x0, int x1) { normals_span_scalar(in, mode, tol, run, 100, std::max(x0, run.xl), std::min(x1, run.xr), r); });
       }
   }
@@ -261,7 +260,7 @@ TEST_F(SpanKernels, DiffuseQuotientMatchesScalarReferenceOnEveryIsa) {
   std::mt19937 rng(15);
   TwoLights scene;
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (bool srgb : {false, true}) {
       scene.k.srgb = srgb;
       QuotientCase qc = quotient_case(rng, 0.3f, scene.m, scene.k);
@@ -270,7 +269,7 @@ TEST_F(SpanKernels, DiffuseQuotientMatchesScalarReferenceOnEveryIsa) {
         qc = quotient_case(rng, 0.3f, scene.m, scene.k);
       // Linear output: the same IEEE operations, bit-exact; sRGB as gouraud's, 1 LSB.
       expect_same("diffuse quotient " + isa + (srgb ? " srgb" : ""), rng, srgb ? 1 : 0,
-                  [&](RowTarget r, int x0, int x1) { diffuse_quotient_span(qc.in, dq, 100, x0, x1, r); },
+                  [&](RowTarget r, int x0, int x1) { diffuse_quotient_span(simd, qc.in, dq, 100, x0, x1, r); },
                   [&](RowTarget r, int x0, int x1) { diffuse_quotient_span_scalar(qc.in, dq, 100, x0, x1, r); });
     }
   }

@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "classify/segment_step.h"
-#include "exec/isa.h"
+#include "core/simd_target.h"
 #include "frame/edge_function.h"
 #include "raster/spans.h"
 #include "light/brdf.h"
@@ -116,7 +116,6 @@ void expect_within(const std::string& case_name, const std::string& kernel, doub
 
 class StabilityKernels : public ::testing::Test {
  protected:
-  void TearDown() override { select_isa("best"); }
 };
 
 TEST_F(StabilityKernels, PhongOver65536PxWithTinyPerPixelAngles) {
@@ -129,10 +128,10 @@ TEST_F(StabilityKernels, PhongOver65536PxWithTinyPerPixelAngles) {
         ASSERT_TRUE(std::isfinite(c.c[0]) && std::isfinite(c.c[1]) && std::isfinite(c.c[2])) << x;
       }
       const double bound = phong_bound(s.light);
-      const Row simd = s.shade([&](RowTarget r, int x0, int x1) { phong_span(s.in, 0, x0, x1, r); });
+      const Row lanes = s.shade([&](RowTarget r, int x0, int x1) { phong_span(SimdTarget{}, s.in, 0, x0, x1, r); });
       const Row scalar = s.shade([&](RowTarget r, int x0, int x1) { phong_span_scalar(s.in, 0, x0, x1, r); });
       expect_within(span_case(n, phi), "phong_span, SIMD and scalar",
-                    std::max(s.worst_lsb(simd), s.worst_lsb(scalar)), bound);
+                    std::max(s.worst_lsb(lanes), s.worst_lsb(scalar)), bound);
     }
 }
 
@@ -147,13 +146,13 @@ TEST_F(StabilityKernels, NormalsPathsOver65536PxWithTinyPerPixelAngles) {
         // up to the turn rate's change over 16 px (below 1e-9 rad here), and the adaptive
         // weights are within tol: both hold phong's bound plus the budget's half step.
         const double bound = phong_bound(s.light);
-        const Row simd =
-            s.shade([&](RowTarget r, int x0, int x1) { normals_span(s.in, mode, tol, run, 0, x0, x1, r); });
+        const Row lanes =
+            s.shade([&](RowTarget r, int x0, int x1) { normals_span(SimdTarget{}, s.in, mode, tol, run, 0, x0, x1, r); });
         const Row scalar =
             s.shade([&](RowTarget r, int x0, int x1) { normals_span_scalar(s.in, mode, tol, run, 0, x0, x1, r); });
         const std::string kernel = mode == SpanNormals::Adaptive ? "adaptive" : "equal-angle";
         expect_within(span_case(n, phi), "normals_span " + kernel + ", SIMD and scalar",
-                      std::max(s.worst_lsb(simd), s.worst_lsb(scalar)), bound);
+                      std::max(s.worst_lsb(lanes), s.worst_lsb(scalar)), bound);
       }
 }
 
@@ -170,8 +169,8 @@ TEST_F(StabilityKernels, HybridSegmentsOver65536PxWithinTheirDerivedBound) {
         const double interpolation = angle * angle / 8 * (w.diffuse + w.specular * n * (n + 1));
         const double bound = phong_bound(s.light) + std::floor(255 * interpolation);
         const HybridRun run{step, 0, kSpanPx - 1};
-        const Row simd = s.shade([&](RowTarget r, int x0, int x1) { hybrid_span(s.in, run, 0, x0, x1, r); });
-        expect_within(span_case(n, phi), "hybrid_span, step " + std::to_string(step), s.worst_lsb(simd), bound);
+        const Row lanes = s.shade([&](RowTarget r, int x0, int x1) { hybrid_span(SimdTarget{}, s.in, run, 0, x0, x1, r); });
+        expect_within(span_case(n, phi), "hybrid_span, step " + std::to_string(step), s.worst_lsb(lanes), bound);
       }
 }
 
@@ -185,11 +184,15 @@ TEST_F(StabilityKernels, GouraudOver65536PxDoesNotDrift) {
     in.level_hi[c] = float(255 * c1);
   }
   double worst = 0;
-  for (bool simd : {true, false}) {
+  for (bool lanes : {true, false}) {
     Row row(kSpanPx);
-    for (int x0 = 0; x0 < kSpanPx; x0 += kTilePx)
-      (simd ? gouraud_span : gouraud_span_scalar)(in, false, 0, x0, std::min(x0 + kTilePx, kSpanPx) - 1,
-                                                  row.target());
+    for (int x0 = 0; x0 < kSpanPx; x0 += kTilePx) {
+      const int x1 = std::min(x0 + kTilePx, kSpanPx) - 1;
+      if (lanes)
+        gouraud_span(SimdTarget{}, in, false, 0, x0, x1, row.target());
+      else
+        gouraud_span_scalar(in, false, 0, x0, x1, row.target());
+    }
     for (int x = 0; x < kSpanPx; ++x)
       worst = std::max(worst, std::fabs(row.channel(x, 0) - double(quantize(c0 + (c1 - c0) * x / kSpanPx, false))));
   }
@@ -252,7 +255,7 @@ TEST_F(StabilityKernels, SliverOfPointTwoPxSquaredAnd2000PxLong) {
     in.shade = &light.k;
     std::vector<Row> rows(kSize, Row(kSize));
     for_each_span(s.edges, PixelRect{0, 0, kSize - 1, kSize - 1}, [&](int py, int x0, int x1) {
-      phong_span(in, py, x0, x1, rows[py].target());
+      phong_span(SimdTarget{}, in, py, x0, x1, rows[py].target());
       for (int x = x0; x <= x1; ++x) {
         ++covered;
         const PhongColor c = phong_color_scalar(in, pixel_offsets(in.bary, x, py));
@@ -309,7 +312,7 @@ TEST(StabilityFastMath, InverseSquareRootOverTheNormalFloats) {
 TEST_F(StabilityKernels, NormalsTooShortToNormaliseShadeAsZero) {
   const Lighting light(37.5);
   for (const std::string& isa : available_isas()) {
-    select_isa(isa);
+    const SimdTarget simd = simd_target(isa);
     for (float tiny : {1e-20f, 3e-23f, 1e-30f, 0.0f}) {
       PhongSpanInput in;
       in.bary = Barycentrics{0, 0, {}, {}, {}};
@@ -321,14 +324,14 @@ TEST_F(StabilityKernels, NormalsTooShortToNormaliseShadeAsZero) {
       EXPECT_EQ(c.c[0], kAmbient) << tiny;
       const int ambient = quantize(double(kAmbient), false);
       Row row(64);
-      phong_span(in, 0, 0, 40, row.target());
+      phong_span(simd, in, 0, 0, 40, row.target());
       EXPECT_EQ(row.channel(7, 0), ambient) << isa << " " << tiny;
       Row scalar(64);
       phong_span_scalar(in, 0, 0, 40, scalar.target());
       EXPECT_EQ(scalar.channel(7, 0), ambient) << "scalar " << tiny;
       for (SpanNormals mode : {SpanNormals::Adaptive, SpanNormals::EqualAngle}) {
         Row blocks(64);
-        normals_span(in, mode, hybrid_tolerance(1.0), HybridRun{1, 0, 40}, 0, 0, 40, blocks.target());
+        normals_span(simd, in, mode, hybrid_tolerance(1.0), HybridRun{1, 0, 40}, 0, 0, 40, blocks.target());
         EXPECT_EQ(blocks.channel(7, 0), ambient) << isa << " normals " << int(mode) << " " << tiny;
       }
     }

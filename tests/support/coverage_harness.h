@@ -63,7 +63,7 @@ inline CoverageResult rasterize_clip_triangles(const std::vector<std::array<glm:
   frame.grid.tiles_x = (width + tile_px - 1) / tile_px;
   frame.grid.tiles_y = (height + tile_px - 1) / tile_px;
   frame.shade.background = glm::vec3(0);
-  const SetupParams params{viewport, cull, false, sierpinski};
+  const SetupParams params{.viewport = viewport, .cull = cull, .sierpinski = sierpinski};
   const uint32_t n = static_cast<uint32_t>(tris.size());
   frame.chunks.resize((n + per_chunk - 1) / per_chunk);
   CoverageResult out;
