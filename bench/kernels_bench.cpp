@@ -8,7 +8,7 @@
 #include "core/simd_target.h"
 #include "frame/edge_function.h"
 #include "light/brdf.h"
-#include "shade/span_kernels.h"
+#include "shade/span_kernels_testing.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 #include "core/dispatch.h"
 #include "core/limits.h"
-#include "exec/tile_io.h"
+#include "exec/tile_io_testing.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

@@ -17,17 +17,11 @@ void stream_rows(SimdTarget simd, const uint8_t* src, int src_stride_bytes, uint
 // stored as stream_rows() does.
 void rgba_rows_to_rgb(SimdTarget simd, const uint32_t* src, int src_stride_px, uint8_t* dst, int dst_stride_bytes,
                       int width, int rows);
-// The scalar reference.
-void rgba_rows_to_rgb_scalar(const uint32_t* src, int src_stride_px, uint8_t* dst,
-                             int dst_stride_bytes, int width, int rows);
 
 // A tile's scratch before its triangles: the background colour at the cleared depth 1.0, rows
 // of `width` pixels `stride_px` apart. SIMD on the chosen ISA: the baseline build's std::fill_n
 // of both arrays took 1.2 instructions a pixel, 3 % of a 4K gouraud frame's back end.
 void clear_tile(SimdTarget simd, uint32_t* color, float* depth, int stride_px, uint32_t background, int width, int rows);
-// The scalar reference.
-void clear_tile_scalar(uint32_t* color, float* depth, int stride_px, uint32_t background, int width,
-                       int rows);
 // What a finished tile holds: pixels drawn (depth below the cleared 1.0) and, where `by_path`,
 // how many of them each shading path drew (the alpha byte carries path p as p; untagged pixels
 // keep 0xFF). At 4K the scalar loop was a sixth of a classified frame's back end.
@@ -37,7 +31,5 @@ struct TilePixelCounts {
 };
 TilePixelCounts count_tile_pixels(SimdTarget simd, const float* depth, const uint32_t* color, int stride_px, int width,
                                   int rows, bool by_path);
-TilePixelCounts count_tile_pixels_scalar(const float* depth, const uint32_t* color, int stride_px,
-                                         int width, int rows, bool by_path);
 
 }  // namespace fastshade

@@ -1,4 +1,5 @@
 #include "light/brdf.h"
+#include "light/brdf_testing.h"
 
 #include <algorithm>
 #include <array>

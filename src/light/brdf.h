@@ -23,12 +23,8 @@ std::vector<std::string> brdf_names();  // one spelling each, "cosk:3" for CosK
 // millisecond; done once per material and frame).
 BrdfParams make_brdf(const BrdfChoice& choice, double n);
 
-// One value, as eval_brdf_scalar: for scalar paths (Gouraud's vertex lighting).
+// One value, as the kernel's scalar twin computes it (light/brdf_testing.h): for scalar paths (Gouraud's vertex lighting).
 float eval_brdf_one(const BrdfParams& p, float n_dot_h);
-
-// The scalar reference of the SIMD kernel (light/brdf-inl.h): the same float operations in the
-// same order. Inputs are N.H values, any float; outputs are in [0, 1], 0 for NaN.
-void eval_brdf_scalar(const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);
 
 // The SIMD kernel on the ISA `simd` (core/simd_target.h), for tests and tables.
 void eval_brdf(SimdTarget simd, const BrdfParams& p, const float* n_dot_h, float* out, std::size_t count);

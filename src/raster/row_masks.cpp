@@ -8,7 +8,7 @@
 
 #include "core/dispatch.h"
 #include "raster/row_masks-inl.h"
-#include "raster/row_masks.h"
+#include "raster/row_masks_testing.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

@@ -1,5 +1,6 @@
 // The diffuse quotient's set-up and its scalar twin (shade/diffuse_quotient.h).
 #include "shade/diffuse_quotient.h"
+#include "shade/span_kernels_testing.h"
 
 #include <algorithm>
 #include <cmath>

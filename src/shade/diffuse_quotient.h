@@ -11,7 +11,6 @@
 #pragma once
 #include <glm/vec3.hpp>
 
-#include "core/simd_target.h"
 #include "raster/planes.h"
 #include "raster/spans.h"
 #include "shade/span_kernels.h"
@@ -44,16 +43,5 @@ struct DiffuseQuotient {
 // rounding bound above does not hold or the frame has too many lights.
 bool set_up_diffuse_quotient(const PhongSpanInput& in, const Barycentrics& bary, const PixelRect& box,
                              const glm::vec3 n_over_w[3], DiffuseQuotient& dq);
-
-// The diffuse colour at one pixel before quantisation: the scalar twin of DiffuseQuotientColor
-// (shade/diffuse_quotient-inl.h), the same float operations in the same order.
-PhongColor diffuse_quotient_color_scalar(const PhongSpanInput& in, const DiffuseQuotient& dq,
-                                         const PixelOffsets& o);
-
-// A row span shaded with the quotient: scalar reference and the SIMD kernel on the ISA `simd`.
-void diffuse_quotient_span_scalar(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0,
-                                  int x1, RowTarget row);
-void diffuse_quotient_span(SimdTarget simd, const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0, int x1,
-                           RowTarget row);
 
 }  // namespace fastshade

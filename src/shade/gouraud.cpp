@@ -10,6 +10,7 @@
 #include <hwy/highway.h>
 
 #include "core/dispatch.h"
+#include "shade/scalar_twin.h"
 #include "light/lighting.h"
 #include "shade/methods.h"
 #include "shade/planes_over_w-inl.h"
@@ -106,6 +107,26 @@ DrawTriangleFn select_gouraud_diffuse(SimdTarget simd, const ShadeConstants& sha
 
 void gouraud_span(SimdTarget simd, const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row) {
   FASTSHADE_DISPATCH(simd, GouraudSpan)(in, srgb, py, x0, x1, row);
+}
+
+
+// The scalar twin of GouraudSpan.
+void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1,
+                         RowTarget row) {
+  for (int px = x0; px <= x1; ++px) {
+    const PixelOffsets o = pixel_offsets(in.bary, px, py);
+    if (!depth_pass(in.depth, o, row.depth[px])) continue;
+    const float w = 1.0f / plane_at(in.inv_w, o);
+    uint8_t c[3];
+    for (int i = 0; i < 3; ++i) {
+      float level = plane_at_unclamped(in.level_over_w[i], o) * w;
+      level = level > in.level_lo[i] ? level : in.level_lo[i];  // x86 max and min: NaN takes the bound
+      level = level < in.level_hi[i] ? level : in.level_hi[i];
+      c[i] = srgb ? quantize_like_simd(level * (1.0f / 255.0f), true)
+                  : static_cast<uint8_t>(static_cast<int32_t>(std::floor(level + 0.5f)));
+    }
+    row.color[px] = pack_rgba(c[0], c[1], c[2]);
+  }
 }
 
 }  // namespace fastshade

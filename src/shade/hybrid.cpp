@@ -11,6 +11,7 @@
 #include <hwy/highway.h>
 
 #include "core/dispatch.h"
+#include "shade/scalar_twin.h"
 #include "light/brdf_variants.h"
 #include "classify/segment_step.h"
 #include "shade/methods.h"
@@ -239,6 +240,37 @@ DrawTriangleFn select_hybrid(SimdTarget simd, const ShadeConstants& shade) {
 
 void hybrid_span(SimdTarget simd, const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row) {
   FASTSHADE_DISPATCH(simd, HybridSpan)(in, run, py, x0, x1, row);
+}
+
+
+// The scalar twin of HybridSpan.
+void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1,
+                        RowTarget row) {
+  const bool srgb = in.shade->srgb;
+  const int step = run.step;
+  for (int px = x0; px <= x1; ++px) {
+    const PixelOffsets o = pixel_offsets(in.bary, px, py);
+    if (!depth_pass(in.depth, o, row.depth[px])) continue;
+    PhongColor rgb;
+    if (step == 1) {
+      rgb = phong_color_scalar(in, o);
+    } else {
+      const int ea = run.xl + ((px - run.xl) & ~(step - 1)), eb = std::min(ea + step, run.xr);
+      float da = 0.0f, db = 0.0f;  // the split light's N.L at the ends
+      const PhongColor ca = phong_color_scalar(in, pixel_offsets(in.bary, ea, py), run.split_light, &da, run.specular);
+      const PhongColor cb = phong_color_scalar(in, pixel_offsets(in.bary, eb, py), run.split_light, &db, run.specular);
+      // The slope per pixel, then the offset from ea: the SIMD kernel's operations in order.
+      const float len = static_cast<float>(eb - ea), dx = static_cast<float>(px - ea);
+      auto along = [&](float a, float b) { return a + dx * (eb > ea ? (b - a) / len : 0.0f); };
+      for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = along(ca.c[ch], cb.c[ch]);
+      if (run.split_light >= 0) {
+        const float n_dot_l = std::max(along(da, db), 0.0f);
+        const LightView& light = in.shade->lights[run.split_light];
+        for (int ch = 0; ch < 3; ++ch) rgb.c[ch] = rgb.c[ch] + (light.color[ch] * in.material->kd[ch]) * n_dot_l;
+      }
+    }
+    row.color[px] = pack_quantized(rgb, srgb);
+  }
 }
 
 }  // namespace fastshade

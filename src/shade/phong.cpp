@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include "core/dispatch.h"
+#include "shade/scalar_twin.h"
 #include "light/brdf_variants.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/methods.h"
@@ -90,6 +91,31 @@ void diffuse_quotient_span(SimdTarget simd, const PhongSpanInput& in, const Diff
 
 void light_pixel_queue(SimdTarget simd, PixelQueue& queue, const TileTarget& target, bool all) {
   FASTSHADE_DISPATCH(simd, LightPixelQueue)(queue, target, all);
+}
+
+
+// The scalar twins of PhongSpan, DiffuseQuotientSpan and LightPixelQueue.
+void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row) {
+  lit_span_scalar(in, py, x0, x1, row, [&](const PixelOffsets& o) { return phong_color_scalar(in, o); });
+}
+
+void diffuse_quotient_span_scalar(const PhongSpanInput& in, const DiffuseQuotient& dq, int py, int x0,
+                                  int x1, RowTarget row) {
+  lit_span_scalar(in, py, x0, x1, row,
+                  [&](const PixelOffsets& o) { return diffuse_quotient_color_scalar(in, dq, o); });
+}
+
+void light_pixel_queue_scalar(PixelQueue& q, const TileTarget& tt) {
+  PhongSpanInput in;
+  in.material = q.material;
+  in.shade = q.shade;
+  const PixelOffsets unused{};  // only a local viewer reads the pixel's offsets
+  const bool srgb = q.shade->srgb;
+  for (int i = 0; i < q.count; ++i) {
+    const PhongColor c = phong_color_from_plane_normal_scalar(in, q.nx[i], q.ny[i], q.nz[i], unused);
+    tt.color[q.at[i]] = pack_quantized(c, srgb) ^ q.alpha_xor;
+  }
+  q.count = 0;
 }
 
 }  // namespace fastshade

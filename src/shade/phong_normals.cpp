@@ -9,6 +9,7 @@
 #include <hwy/highway.h>
 
 #include "core/dispatch.h"
+#include "shade/scalar_twin.h"
 #include "light/brdf_variants.h"
 #include "shade/methods.h"
 #include "shade/normal_blocks.h"
@@ -89,6 +90,26 @@ DrawTriangleFn select_phong_normals_diffuse(SimdTarget simd, const ShadeConstant
 void normals_span(SimdTarget simd, const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
                   int x0, int x1, RowTarget row) {
   FASTSHADE_DISPATCH(simd, NormalsSpan)(in, mode, tol, run, py, x0, x1, row);
+}
+
+
+// The scalar twin of NormalsSpan.
+void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
+                         int py, int x0, int x1, RowTarget row) {
+  const bool srgb = in.shade->srgb;
+  const int block = limits::kSeedBlockPx;
+  NormalBlock nb;
+  for (int xb = x0 & ~(block - 1); xb <= x1; xb += block) {
+    make_normal_block(in, mode, tol, xb, py, run.xl, run.xr, nb);
+    for (int px = std::max(xb, x0); px <= std::min(xb + block - 1, x1); ++px) {
+      const PixelOffsets o = pixel_offsets(in.bary, px, py);
+      if (!depth_pass(in.depth, o, row.depth[px])) continue;
+      const float a = nb.alpha[px - xb], b = nb.beta[px - xb];
+      const PhongColor rgb = phong_color_from_normal_scalar(
+          in, a * nb.na[0] + b * nb.nz[0], a * nb.na[1] + b * nb.nz[1], a * nb.na[2] + b * nb.nz[2], o);
+      row.color[px] = pack_quantized(rgb, srgb);
+    }
+  }
 }
 
 }  // namespace fastshade

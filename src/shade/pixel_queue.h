@@ -7,7 +7,6 @@
 #pragma once
 #include <cstdint>
 
-#include "core/simd_target.h"
 #include "core/limits.h"
 #include "frame/shade_constants.h"
 
@@ -41,10 +40,5 @@ struct PixelQueue {
 inline void light_pending(PixelQueue& queue, const TileTarget& target) {
   if (queue.count > 0) queue.light(queue, target, true);
 }
-
-// The kernel on the ISA `simd`, and its scalar reference (the same float operations per
-// entry, lighting all of them), for tests.
-void light_pixel_queue(SimdTarget simd, PixelQueue& queue, const TileTarget& target, bool all);
-void light_pixel_queue_scalar(PixelQueue& queue, const TileTarget& target);
 
 }  // namespace fastshade

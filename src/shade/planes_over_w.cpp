@@ -6,7 +6,7 @@
 
 #include "core/dispatch.h"
 #include "shade/planes_over_w-inl.h"
-#include "shade/planes_over_w.h"
+#include "shade/planes_over_w_testing.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

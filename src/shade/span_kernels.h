@@ -1,14 +1,12 @@
-// The span kernels as plain functions over plain data, so each SIMD kernel can be tested
-// against its scalar reference: what a kernel reads is set up once per triangle (raster/
+// The span kernels' plain data, so each SIMD kernel can be tested against its scalar twin
+// (shade/span_kernels_testing.h): what a kernel reads is set up once per triangle (raster/
 // planes.h), and a call shades one row span [x0, x1] of it into a tile row.
 #pragma once
 #include <algorithm>
 #include <cstdint>
 
-#include "core/simd_target.h"
 #include "frame/shade_constants.h"
 #include "raster/planes.h"
-#include "frame/shade_constants.h"
 
 namespace fastshade {
 
@@ -65,23 +63,6 @@ struct PhongSpanInput {
   const ShadeConstants* shade;  // lights, ambient, viewer, sRGB
 };
 
-// Phong's colour at one pixel before quantisation (the scalar twin of PhongColor in phong-inl).
-struct PhongColor {
-  float c[3];
-};
-// split_light >= 0 (hybrid's split light, classify/segment_step.h): that light's diffuse term is
-// left out and its unclamped N.L written to *split_n_dot_l. specular = false: no specular term
-// (the SIMD kSpecular = false; x + 0 gives x's bits).
-PhongColor phong_color_scalar(const PhongSpanInput& in, const PixelOffsets& o, int split_light = -1,
-                              float* split_n_dot_l = nullptr, bool specular = true);
-// The same for a given unit normal (the --normals paths).
-PhongColor phong_color_from_normal_scalar(const PhongSpanInput& in, float nx, float ny, float nz,
-                                          const PixelOffsets& o, int split_light = -1,
-                                          float* split_n_dot_l = nullptr, bool specular = true);
-
-// Scalar references: per pixel, the same float operations as the SIMD kernels.
-void gouraud_span_scalar(const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
-void phong_span_scalar(const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
 // [xl, xr]: the row's whole covered run in the triangle; [x0, x1]: the part to shade.
 struct HybridRun {
   int step;  // segment length for the triangle (classify/segment_step.h), 1 = per-pixel Phong
@@ -89,21 +70,5 @@ struct HybridRun {
   int split_light = -1;  // the light whose N.L is interpolated unclamped (SegmentPlan)
   bool specular = true;  // false: the ends leave the specular term out (SegmentPlan)
 };
-void hybrid_span_scalar(const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
-
-// The SIMD kernels on the ISA `simd` (core/simd_target.h), for tests and benchmarks.
-void gouraud_span(SimdTarget simd, const GouraudSpanInput& in, bool srgb, int py, int x0, int x1, RowTarget row);
-void phong_span(SimdTarget simd, const PhongSpanInput& in, int py, int x0, int x1, RowTarget row);
-void hybrid_span(SimdTarget simd, const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
-
-// --normals adaptive | equal-angle (shade/normal_blocks.h); run.step is unused.
-void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
-                         int py, int x0, int x1, RowTarget row);
-void normals_span(SimdTarget simd, const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
-                  int x0, int x1, RowTarget row);
-
-// quantize() (light/lighting.h) as the SIMD kernels compute it: the same float operations,
-// with the kernels' exp2/log2 for the sRGB curve.
-uint8_t quantize_like_simd(float v, bool srgb);
 
 }  // namespace fastshade

@@ -8,7 +8,7 @@
 
 #include "core/limits.h"
 #include "core/simd_target.h"
-#include "exec/tile_io.h"
+#include "exec/tile_io_testing.h"
 #include "fastshade/image.h"
 
 namespace fastshade {

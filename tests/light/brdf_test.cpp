@@ -10,6 +10,7 @@
 #include "core/simd_target.h"
 #include "fastshade/error.h"
 #include "light/brdf.h"
+#include "light/brdf_testing.h"
 
 namespace fastshade {
 namespace {

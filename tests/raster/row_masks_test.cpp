@@ -8,7 +8,7 @@
 #include <random>
 
 #include "core/simd_target.h"
-#include "raster/row_masks.h"
+#include "raster/row_masks_testing.h"
 
 namespace fastshade {
 namespace {

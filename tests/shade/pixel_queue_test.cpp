@@ -18,7 +18,7 @@
 #include "fastshade/scene.h"
 #include "light/brdf.h"
 #include "shade/method.h"
-#include "shade/pixel_queue.h"
+#include "shade/span_kernels_testing.h"
 
 namespace fastshade {
 namespace {

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "core/simd_target.h"
-#include "shade/planes_over_w.h"
+#include "shade/planes_over_w_testing.h"
 
 namespace fastshade {
 namespace {

@@ -15,7 +15,7 @@
 #include "light/brdf.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/normal_blocks.h"
-#include "shade/span_kernels.h"
+#include "shade/span_kernels_testing.h"
 
 namespace fastshade {
 namespace {

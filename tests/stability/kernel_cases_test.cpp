@@ -21,7 +21,7 @@
 #include "light/lighting.h"
 #include "shade/method.h"
 #include "shade/normal_blocks.h"
-#include "shade/span_kernels.h"
+#include "shade/span_kernels_testing.h"
 #include "stability/stability_bounds.h"
 #include "stability/stability_harness.h"
 
