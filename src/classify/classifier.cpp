@@ -1,3 +1,4 @@
+#include "classify/classify_limits.h"
 #include "classify/classifier.h"
 
 #include <algorithm>
@@ -57,8 +58,7 @@ double max_cos_nh(const ClassifyInput& in, const dvec3& l, const dvec3& h_infini
 }
 
 namespace {
-// A light whose term stays below this share of the threshold counts as that share, unpowed.
-constexpr double kNegligible = 1e-3;
+constexpr double kNegligible = limits::kNegligibleLightShare;
 }  // namespace
 
 Classifier::Classifier(const ShadeConstants& k, const ClassifierParams& p) : shade_(k), params_(p) {

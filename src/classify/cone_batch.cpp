@@ -8,6 +8,7 @@
 
 #include <hwy/highway.h>
 
+#include "classify/classify_limits.h"
 #include "core/dispatch.h"
 #include "classify/cone_batch.h"
 #include "core/dot3-inl.h"
@@ -138,9 +139,6 @@ HWY_INLINE void LoadNormals(D d, const NormalsSoA& soa, std::size_t i, Vec3<D> n
     n[k] = {hn::LoadU(d, soa.n[3 * k] + i), hn::LoadU(d, soa.n[3 * k + 1] + i), hn::LoadU(d, soa.n[3 * k + 2] + i)};
 }
 
-// Lanes may carry lights_with_highlight as a sum of powers of two in a double (exact below
-// 2^53); materials lit by more lights leave the lanes the cheap look only.
-constexpr std::size_t kMaxExactLaneLights = 32;
 
 // Classifier::classify up to its first exact bound, lane by lane: the vertex terms, then the
 // normal cone's cheap bounds. Comments name the scalar steps (classify/classifier.cpp,
@@ -297,16 +295,14 @@ void DecidePathsBatch(const ConeBatchTerms& terms, const NormalsSoA& normals, st
       lights[t] = static_cast<uint64_t>(light_bits[k]);
     }
   };
-  // Lanes the cheap look leaves are gathered into full vectors for the exact look, which
-  // costs ten times as much: block by block, so that the gathered copies stay small.
-  constexpr std::size_t kBlock = 256;
+  constexpr std::size_t kBlock = limits::kConeExactBlock;
   alignas(64) double rest_n[9][kBlock + kMaxLanes], rest_spec[kBlock + kMaxLanes], rest_diffuse[kBlock + kMaxLanes],
       rest_cheap[kBlock + kMaxLanes];
   uint32_t rest_index[kBlock];
   alignas(64) double tail[9][kMaxLanes];
   NormalsSoA tail_soa, rest_soa;
   for (int k = 0; k < 9; ++k) tail_soa.n[k] = tail[k], rest_soa.n[k] = rest_n[k];
-  const bool exact_lanes = terms.lights.size() <= kMaxExactLaneLights;
+  const bool exact_lanes = terms.lights.size() <= limits::kMaxExactLaneLights;
   for (std::size_t block = 0; block < count; block += kBlock) {
     const std::size_t block_end = std::min(count, block + kBlock);
     std::size_t rest = 0;

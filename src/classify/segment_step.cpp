@@ -38,9 +38,6 @@ ViewMotion view_motion(const SegmentStepInput& tri) {
   return m;
 }
 
-// Below this |L + V| the half vector turns faster than any segment can follow (it is undefined
-// where the light sits exactly behind the viewer): per-pixel Phong.
-constexpr double kMinHalfVectorLength = 1e-3;
 
 }  // namespace
 
@@ -101,7 +98,7 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
       // H = (L + V) / |L + V| moves by at most V's motion over |L + V|, smallest where L.V is.
       const double lv_min = -max_dot_over_triangle(view.v, -l);
       const double half_length = std::sqrt(std::max(0.0, 2.0 + 2.0 * lv_min));
-      if (!(half_length > kMinHalfVectorLength)) return {};
+      if (!(half_length > limits::kMinHalfVectorLength)) return {};
       h = glm::normalize(l + view.centre);
       h_spread = view.spread / half_length;
       h_turn = std::max(h_turn, view.turn_per_px / half_length);
@@ -141,7 +138,7 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
     }
   }
   // Left out, the specular terms err by specular_max at most, which the segments' budget pays.
-  const bool specular = !(specular_max < kNegligibleSpecular);
+  const bool specular = !(specular_max < limits::kNegligibleSpecular);
   const double budget = specular ? tol : tol - specular_max;
   const double rel_turn = turn + h_turn;  // N against H, radians per pixel
   if (!(rel_turn > 0.0)) return {kBlock, -1, specular};

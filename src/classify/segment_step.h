@@ -6,16 +6,11 @@
 
 #include <glm/vec3.hpp>
 
+#include "classify/classify_limits.h"
 #include "classify/highlight_bound.h"
 #include "frame/shade_constants.h"
 
 namespace fastshade {
-
-// Triangles narrower than this (whole bounding box, not a tile's part of it, so that every
-// tile decides alike) take per-pixel Phong: a segment end costs as much as a pixel, and a
-// batch of rows has a fixed cost. Measured (docs/PERFORMANCE.md, session 4): 16 beat 8 on both
-// the bunny (0.95x) and the spot 4K frame (0.99x).
-inline constexpr int kHybridMinWidthPx = 16;
 
 // What the step decision needs of a triangle: unit vertex normals (view space, flipped for
 // two-sided back faces), 1/w at the vertices and, for a local viewer, their view-space
@@ -30,21 +25,13 @@ struct SegmentStepInput {
   const ShadeConstants* shade = nullptr;
 };
 
-// A triangle whose specular terms, bounded at c_max and summed over lights as the step bound
-// sums them, stay below this has its segment ends lit without them. 2^-24 is 1/65536 of an
-// 8-bit step: a level can change only where the colour sits that close to a rounding boundary,
-// and the bound charges the term to the tolerance, so the error proof holds as it did. At n = 100
-// and ks = 0.5 it leaves out every triangle whose N.H stays below 0.85 (32 degrees from H): on
-// the 4K spot frame, most of them (docs/PERFORMANCE.md, session 27).
-inline constexpr double kNegligibleSpecular = 0x1p-24;
-
 // How hybrid draws a triangle: its segment length (16, 8, 4, 2 or 1 px), the light, if any,
 // whose N.L it interpolates unclamped between the segment ends and clamps per pixel, and
 // whether its ends need the specular term at all.
 struct SegmentPlan {
   int step_px = 1;
   int split_light = -1;  // -1: every light's diffuse term is interpolated clamped
-  bool specular = true;  // false: every light's ks c^n < kNegligibleSpecular on the triangle
+  bool specular = true;  // false: every light's ks c^n < limits::kNegligibleSpecular on the triangle
 };
 
 // The segment plan for a whole triangle.

@@ -1,4 +1,6 @@
-// Every limit and magic number of the pipeline, with the reasoning that bounds it.
+// The limits and magic numbers the whole pipeline shares, with the reasoning that bounds each.
+// A folder's own tuning constants are in its *_limits.h (exec/, classify/, front/, shade/), in
+// the same namespace, so every one reads limits::kName.
 #pragma once
 #include <cstddef>
 #include <cstdint>

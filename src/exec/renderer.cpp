@@ -9,6 +9,7 @@
 #include "classify/classifier.h"
 #include "core/simd_target.h"
 #include "exec/frame_profile.h"
+#include "exec/exec_limits.h"
 #include "exec/frame_stats.h"
 #include "exec/resolve_options.h"
 #include "exec/tile_executor.h"
@@ -31,9 +32,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Triangles per task of the segment-length pass: about 50-100 us of work at 0.2-0.4 us a triangle,
-// far above a task's cost, and 16 tasks for a chunk of 4096.
-constexpr uint32_t kStepBlock = 256;
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
@@ -145,10 +143,10 @@ struct Renderer::Impl {
       // mesh hold most of its triangles, and deciding a step costs about 0.2-0.4 us.
       if (setup.segment_steps != SegmentSteps::None)
         tbb::parallel_for(std::size_t(0), frame.chunks.size(), [&](std::size_t c) {
+          constexpr uint32_t kBlock = limits::kSegmentStepBlock;
           const uint32_t count = static_cast<uint32_t>(frame.chunks[c].segment_pending.size());
-          tbb::parallel_for(uint32_t(0), (count + kStepBlock - 1) / kStepBlock, [&](uint32_t block) {
-            decide_segment_steps(frame, static_cast<uint32_t>(c), block * kStepBlock,
-                                 std::min(count, (block + 1) * kStepBlock));
+          tbb::parallel_for(uint32_t(0), (count + kBlock - 1) / kBlock, [&](uint32_t block) {
+            decide_segment_steps(frame, static_cast<uint32_t>(c), block * kBlock, std::min(count, (block + 1) * kBlock));
           });
         });
       t.front_end = ms_since(t0);

@@ -10,9 +10,11 @@
 
 #include "core/force_inline.h"
 #include "exec/frame_profile.h"
+#include "exec/exec_limits.h"
 #include "exec/tile_io.h"
 #include "light/lighting.h"
 #include "shade/pixel_queue.h"
+#include "shade/shade_limits.h"
 
 namespace fastshade {
 
@@ -25,7 +27,7 @@ struct TileBuffers {  // one worker's scratch, sized for the largest tile, reuse
   // This worker's share of the frame's counts: shared atomics were locked adds, six a tile.
   BackEndCounts counts;
   TileBuffers() {
-    const std::size_t n = std::size_t(limits::kMaxTilePx) * limits::kMaxTilePx + kScratchPadPx;
+    const std::size_t n = std::size_t(limits::kMaxTilePx) * limits::kMaxTilePx + limits::kScratchPadPx;
     color.resize(n);
     depth.resize(n);
   }
@@ -52,14 +54,12 @@ void fill_rect(SimdTarget simd, Image& image, const PixelRect& r, const std::vec
               (r.x1 - r.x0 + 1) * 3, r.y1 - r.y0 + 1);
 }
 
-// A tile's triangles sit wherever their chunk put them and their vertices wherever the mesh
-// did: fetch them ahead. Triangle i + 8 now; the vertices of triangle i + 4, whose record
-// the previous prefetch has brought in by now. (Fetching the second line a 72-byte record
-// may straddle as well measured no different.) Forced inline: GCC counts a function that
-// only prefetches as pure, and a call to a pure function whose result is unused as dead, so
-// until session 8 no prefetch reached the binary (bunny raster 0.79x on 1 thread with them).
+// The records and vertices of triangles ahead (exec/exec_limits.h). Forced inline: GCC counts a
+// function that only prefetches as pure, and a call to a pure function whose result is unused
+// as dead, so before af36a55 no prefetch reached the binary (bunny raster 0.79x on 1 thread
+// with them).
 FASTSHADE_FORCE_INLINE void prefetch_ahead(const Frame& frame, uint32_t i, uint32_t end) {
-  constexpr uint32_t kTriangleAhead = 8, kVertexAhead = 4;
+  constexpr uint32_t kTriangleAhead = limits::kTilePrefetchTriangles, kVertexAhead = limits::kTilePrefetchVertices;
   if (i + kTriangleAhead < end) __builtin_prefetch(&frame.triangle(frame.bin_entries[i + kTriangleAhead]));
   if (i + kVertexAhead < end) {
     const uint32_t entry = frame.bin_entries[i + kVertexAhead];
@@ -70,16 +70,12 @@ FASTSHADE_FORCE_INLINE void prefetch_ahead(const Frame& frame, uint32_t i, uint3
   }
 }
 
-// A task of the back end: one tile with bins, or a run of up to kEmptyTilesPerTask empty tiles
-// in tile order, which cost only their background. Each task's end is a locked add on the
-// loop's shared count; with a task per tile a 4K frame paid it for 1,582 empty tiles too (79 %
-// of the tile loop's own samples sat on it, perf, session 14). 16 empty 64-px tiles fill 192 KiB
-// in about 10 us, small enough that a run left for last cannot unbalance the workers.
+// A task of the back end: one tile with bins, or a run of up to limits::kEmptyTilesPerTask
+// empty tiles (exec/exec_limits.h).
 struct TileTask {
   int first, count;
   bool empty;
 };
-inline constexpr int kEmptyTilesPerTask = 16;
 
 // The frame's tasks, tile order kept (the order matters only for which worker takes what).
 void plan_tasks(const Frame& frame, std::vector<TileTask>& tasks) {
@@ -88,7 +84,7 @@ void plan_tasks(const Frame& frame, std::vector<TileTask>& tasks) {
     const bool empty = frame.tile_begin[tile] == frame.tile_begin[tile + 1];
     if (empty && !tasks.empty()) {
       TileTask& last = tasks.back();
-      if (last.empty && last.count < kEmptyTilesPerTask) {
+      if (last.empty && last.count < limits::kEmptyTilesPerTask) {
         ++last.count;
         continue;
       }

@@ -11,7 +11,7 @@
 namespace fastshade {
 
 bool draws_segments(const SetupTriangle& t, SegmentSteps which) {
-  if (which == SegmentSteps::None || t.px_max[0] - t.px_min[0] + 1 < kHybridMinWidthPx) return false;
+  if (which == SegmentSteps::None || t.px_max[0] - t.px_min[0] + 1 < limits::kHybridMinWidthPx) return false;
   return which == SegmentSteps::All || Frame::path_of(t) == ShadePath::Specular;
 }
 

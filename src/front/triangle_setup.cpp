@@ -7,6 +7,7 @@
 
 #include "frame/edge_function.h"
 #include "front/clip.h"
+#include "front/front_limits.h"
 #include "front/triangle_fate.h"
 
 namespace fastshade {
@@ -259,10 +260,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
     const uint32_t block_end = std::min(block + kFateBlock, last);
     int run = 0;
     for (uint32_t t = block; t < block_end; ++t) {
-      // The vertices of a dense mesh's triangle sit wherever the mesh put them: fetch those of
-      // the triangle kAhead on (dragon_871k's front end, 1 thread: none 12.6 ms, 8 ahead 11.9 in
-      // session 3; 8 ahead 17.1, 32 ahead 16.6 in session 12, Zen 5 guest).
-      constexpr uint32_t kAhead = 32;
+      constexpr uint32_t kAhead = limits::kSetupPrefetchTriangles;
       if (t + kAhead < last)
         for (uint32_t v : g.triangles[t + kAhead]) {
           __builtin_prefetch(flags + v);

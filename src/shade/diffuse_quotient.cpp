@@ -1,4 +1,5 @@
 // The diffuse quotient's set-up and its scalar twin (shade/diffuse_quotient.h).
+#include "shade/shade_limits.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/span_kernels_testing.h"
 
@@ -15,7 +16,7 @@ namespace fastshade {
 bool set_up_diffuse_quotient(const PhongSpanInput& in, const Barycentrics& bary, const PixelRect& box,
                              const glm::vec3 n_over_w[3], DiffuseQuotient& dq) {
   const ShadeConstants& k = *in.shade;
-  if (k.lights.size() > static_cast<std::size_t>(kDiffuseQuotientMaxLights)) return false;
+  if (k.lights.size() > static_cast<std::size_t>(limits::kDiffuseQuotientMaxLights)) return false;
   // The centre pixel and the box's half extents, in offsets from the anchor (exact integers).
   const int x0 = box.x0 - bary.ax, x1 = box.x1 - bary.ax, y0 = box.y0 - bary.ay, y1 = box.y1 - bary.ay;
   const int cx = x0 + (x1 - x0) / 2, cy = y0 + (y1 - y0) / 2;
@@ -33,7 +34,7 @@ bool set_up_diffuse_quotient(const PhongSpanInput& in, const Barycentrics& bary,
   for (int i = 0; i < 3; ++i)
     for (int j = i; j < 3; ++j) q_min = std::min(q_min, glm::dot(glm::dvec3(n_over_w[i]), glm::dvec3(n_over_w[j])));
   const double t = glm::length(s) + glm::length(gx) * hx + glm::length(gy) * hy;
-  if (!(q_min > 0.0) || !(t * t <= kDiffuseQuotientMaxTermRatio * q_min)) return false;
+  if (!(q_min > 0.0) || !(t * t <= limits::kDiffuseQuotientMaxTermRatio * q_min)) return false;
   dq.cx = static_cast<float>(cx);
   dq.cy = static_cast<float>(cy);
   const double q[6] = {glm::dot(s, s),   2.0 * glm::dot(s, gx), glm::dot(gx, gx),

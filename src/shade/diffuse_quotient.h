@@ -13,28 +13,15 @@
 
 #include "raster/planes.h"
 #include "raster/spans.h"
+#include "shade/shade_limits.h"
 #include "shade/span_kernels.h"
 
 namespace fastshade {
 
-// Lights a quotient holds planes for; a frame with more keeps the normalised planes (a light's
-// plane is 12 bytes of the per-triangle set-up, which this bounds).
-inline constexpr int kDiffuseQuotientMaxLights = 8;
-
-// Largest ratio R = T / Q_min a triangle may have, where T bounds the magnitudes of the
-// quadratic's terms over the triangle's box, (|s| + |g_x| h_x + |g_y| h_y)² with s the normal
-// over w at the centre, g its gradients and h the box's half extents, and Q_min bounds |m|²
-// from below (the least entry of the Gram matrix of the vertices' normals over w). Evaluated in
-// float, |m|² errs by at most 7u T (rounded coefficients, six roundings of partial sums bounded
-// by T), so 1/|m| by 3.5u R + 2u; L·m by 5u sqrt(T), which over |m| is 5u sqrt(R); the product
-// 1u. At R = 64: (3.5 · 64 + 5 · 8 + 3)u = 267u = 1.6e-5, 0.004 LSB, under half the 0.01 LSB
-// reserve (docs/STABILITY.md, B4).
-inline constexpr double kDiffuseQuotientMaxTermRatio = 64.0;
-
 struct DiffuseQuotient {
   float cx, cy;  // the centre pixel, as offsets from the anchor (bary.ax, bary.ay)
   float q[6];    // a, b, c, d, e, f above
-  float l[kDiffuseQuotientMaxLights][3];  // per light: L·m at the centre, per pixel in x, in y
+  float l[limits::kDiffuseQuotientMaxLights][3];  // per light: L·m at the centre, per pixel in x, in y
   int lights;
 };
 

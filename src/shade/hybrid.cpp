@@ -10,6 +10,7 @@
 
 #include <hwy/highway.h>
 
+#include "shade/shade_limits.h"
 #include "core/dispatch.h"
 #include "shade/scalar_twin.h"
 #include "light/brdf_variants.h"
@@ -176,7 +177,7 @@ class HybridRows {
     });
   }
 
-  static constexpr int kMaxEnds = 256;
+  static constexpr int kMaxEnds = limits::kHybridMaxEnds;
   static constexpr int kMaxRows = kMaxEnds / 2;  // a row has at least two ends
   static constexpr int kPad = 2 * HWY_MAX_BYTES / sizeof(float);  // keeps every array 64-byte aligned
   // No member is initialised beyond these: the buffers are written before they are read, and
@@ -205,7 +206,7 @@ template <bool kLocal, LobeKernel kLobe>
 void DrawHybrid(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   HybridRows<kLocal, kLobe> rows;  // started once `in` is ready
   DrawByRowRuns<kLocal, kLobe>(
-      frame, entry, tt, kHybridMinWidthPx,
+      frame, entry, tt, limits::kHybridMinWidthPx,
       [&](const PhongSpanInput& in) {
         const SetupTriangle& t = frame.triangle(entry);
         rows.start(in, Frame::segment_step_px(t), Frame::split_light(t), Frame::segment_specular(t));

@@ -17,7 +17,7 @@ namespace fastshade {
 
 // One tile's scratch: colour packed as R | G << 8 | B << 16 | 0xFF << 24, and float depth.
 // Rows are `stride` pixels; (x_origin, y_origin) is the image position of element 0. The
-// buffers carry kScratchPadPx pixels of slack so a vector may read and blend past a row end.
+// buffers carry limits::kScratchPadPx pixels of slack (shade/shade_limits.h).
 struct TileTarget;
 struct PixelQueue;
 using DrawTriangleFn = void (*)(const Frame& frame, uint32_t entry, const TileTarget& target);
@@ -36,7 +36,6 @@ struct TileTarget {
   // is written out; null where a caller provides none (a draw then stores every pixel at once).
   PixelQueue* pending = nullptr;
 };
-inline constexpr int kScratchPadPx = 64;
 inline constexpr uint32_t path_alpha_xor(ShadePath p) { return (0xFFu ^ static_cast<uint32_t>(p)) << 24; }
 
 // What a method draws a tile with: `any` for every triangle; a classifying method also names

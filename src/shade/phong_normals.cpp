@@ -8,6 +8,7 @@
 
 #include <hwy/highway.h>
 
+#include "shade/shade_limits.h"
 #include "core/dispatch.h"
 #include "shade/scalar_twin.h"
 #include "light/brdf_variants.h"
@@ -18,10 +19,6 @@
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {
 namespace HWY_NAMESPACE {
-
-// Triangles narrower than this (whole bounding box: every tile decides alike) normalise per
-// pixel: a block's end normals would cost as much as the pixels.
-inline constexpr int kBlockNormalsMinWidthPx = 8;
 
 template <bool kLocal, LobeKernel kLobe, bool kSpecular = true>
 void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
@@ -48,7 +45,7 @@ template <bool kLocal, LobeKernel kLobe, bool kSpecular = true>
 void DrawPhongNormals(const Frame& frame, uint32_t entry, const TileTarget& tt) {
   const ShadeConstants& k = frame.shade;
   DrawByRowRuns<kLocal, kLobe, kSpecular>(
-      frame, entry, tt, kBlockNormalsMinWidthPx, [](const PhongSpanInput&) {},
+      frame, entry, tt, limits::kBlockNormalsMinWidthPx, [](const PhongSpanInput&) {},
       [&](const PhongSpanInput& in, int xl, int xr, int py, int x0, int x1, RowTarget row) {
         NormalsSpanImpl<kLocal, kLobe, kSpecular>(in, k.normals, k.hybrid_tolerance, {1, xl, xr}, py, x0,
                                               x1, row);

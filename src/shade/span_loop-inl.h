@@ -14,6 +14,7 @@
 
 #include <hwy/highway.h>
 
+#include "shade/shade_limits.h"
 #include "core/mask_bits-inl.h"
 #include "light/fast_math-inl.h"
 
@@ -156,7 +157,7 @@ HWY_INLINE void WithNarrowestVector(size_t n, Fn&& fn) {
   }
 }
 
-// A row span in the narrowest vectors that hold it. The rows must have kScratchPadPx of slack
+// A row span in the narrowest vectors that hold it. The rows must have limits::kScratchPadPx of slack
 // past x1 (a vector reads and rewrites lanes past it).
 template <typename ShadeFn>
 HWY_INLINE void ShadeSpan(const Barycentrics& bary, const Plane& depth_plane, int py, int x0,
@@ -297,10 +298,6 @@ HWY_INLINE bool HiddenAlready(const TriangleInTile& tri, const TileTarget& tt) {
   return true;
 }
 
-// Boxes up to this many pixels are tested whole before coverage: a dense mesh's triangles are
-// boxes of 1-9 pixels, and the test stops at the first pixel that could still change.
-inline constexpr int kHiddenBoxTestPx = 16;
-
 // A dense mesh's small boxes (box_layout fits a vector, the triangle box_lanes_exact), in
 // vectors of d's width: the box's tile depths in one gather, HiddenAlready on the whole box
 // before the edges are set up, coverage in one vector (BoxCovered), HiddenAlready on the covered
@@ -352,7 +349,7 @@ HWY_INLINE void ShadeTriangle(TriangleInTile& tri, const TileTarget& tt, ShadeFn
       WithNarrowestVector(layout.lanes, [&](auto d) { ShadeBox(d, tri, tt, layout, shade); });
       return;
     }
-    if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= kHiddenBoxTestPx && HiddenAlready(tri, tt)) return;
+    if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) <= limits::kHiddenBoxTestPx && HiddenAlready(tri, tt)) return;
     ShadePacked(tri, tt, shade);
     return;
   }

@@ -131,7 +131,7 @@ TEST(SegmentStep, RandomTrianglesStayWithinTheToleranceAtEveryPixel) {
         const double t = eb > ea ? double(x - ea) / double(eb - ea) : 0.0;
         const Colour ca = exact(ea, y, plan.specular), cb = exact(eb, y, plan.specular);
         if (!plan.specular)
-          ASSERT_LT(exact(x, y).value() - exact(x, y, false).value(), kNegligibleSpecular) << "trial " << trial;
+          ASSERT_LT(exact(x, y).value() - exact(x, y, false).value(), limits::kNegligibleSpecular) << "trial " << trial;
         const Colour drawn{ca.rest + t * (cb.rest - ca.rest), ca.n_dot_l + t * (cb.n_dot_l - ca.n_dot_l), ca.kd_weight};
         const double err = std::abs(drawn.value() - exact(x, y).value());
         worst = std::max(worst, err / tol);

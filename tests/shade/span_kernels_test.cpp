@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "shade/shade_limits.h"
 #include "classify/segment_step.h"
 #include "core/simd_target.h"
 #include "frame/edge_function.h"
@@ -276,12 +277,12 @@ TEST_F(SpanKernels, DiffuseQuotientMatchesScalarReferenceOnEveryIsa) {
 }
 
 // The quotient's colour against the normalised normal of the same planes in double, at every
-// covered pixel of triangles set-up accepts, within the bound kDiffuseQuotientMaxTermRatio
+// covered pixel of triangles set-up accepts, within the bound limits::kDiffuseQuotientMaxTermRatio
 // promises: (3.5 R + 5 sqrt(R) + 3)u of each light's kd, and the sums' own rounding.
 TEST(DiffuseQuotient, WithinItsRoundingBoundOfTheNormalisedPlanes) {
   std::mt19937 rng(16);
   const TwoLights scene;
-  const double r = kDiffuseQuotientMaxTermRatio, u = 0x1p-24;
+  const double r = limits::kDiffuseQuotientMaxTermRatio, u = 0x1p-24;
   const double bound = ((3.5 * r + 5.0 * std::sqrt(r) + 3.0) + 8.0) * u;
   int accepted = 0, pixels = 0;
   double worst = 0.0;
@@ -338,7 +339,7 @@ TEST(DiffuseQuotient, RefusesWhatItCannotBound) {
   far.n_over_w[2] *= 0.01f;
   EXPECT_FALSE(set_up_diffuse_quotient(far.in, far.f.bary, far.box, far.n_over_w, dq));
   // More lights than a quotient holds planes for.
-  while (scene.k.lights.size() <= static_cast<std::size_t>(kDiffuseQuotientMaxLights)) scene.k.lights.push_back(scene.k.lights[0]);
+  while (scene.k.lights.size() <= static_cast<std::size_t>(limits::kDiffuseQuotientMaxLights)) scene.k.lights.push_back(scene.k.lights[0]);
   EXPECT_FALSE(set_up_diffuse_quotient(qc.in, qc.f.bary, qc.box, qc.n_over_w, dq));
 }
 

@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "shade/shade_limits.h"
 #include "classify/segment_step.h"
 #include "core/simd_target.h"
 #include "frame/edge_function.h"
@@ -52,7 +53,7 @@ struct Lighting {
 struct Row {
   std::vector<float> depth;
   std::vector<uint32_t> color;
-  explicit Row(int width) : depth(width + kScratchPadPx, 1.0f), color(width + kScratchPadPx, 0) {}
+  explicit Row(int width) : depth(width + limits::kScratchPadPx, 1.0f), color(width + limits::kScratchPadPx, 0) {}
   RowTarget target() { return {depth.data(), color.data()}; }
   int channel(int x, int ch) const { return (color[x] >> (8 * ch)) & 0xFF; }
 };
