@@ -52,7 +52,7 @@ SegmentPlan hybrid_triangle_step(const SegmentStepInput& tri, float tol) {
   // min |m|, a bound for the whole triangle that holds at folds of antiparallel normals too,
   // where q shrinks. With g = s a + r (a the normals' cone axis, half-angle h, r across a) and
   // u inside the cone, g's part across u is |P_u g| <= |s| sin h + |r|, and its part along u
-  // |u.g| <= |s| + |r| sin h (session 21: the old |u''| <= 3 |u'| |g| / |q| took |g| for both).
+  // |u.g| <= |s| + |r| sin h (f5bb8f3: the old |u''| <= 3 |u'| |g| / |q| took |g| for both).
   const dvec3 n_d[3] = {dvec3(tri.n[0]), dvec3(tri.n[1]), dvec3(tri.n[2])};
   const double q_min = std::min({tri.inv_w[0], tri.inv_w[1], tri.inv_w[2]}) * min_length_over_triangle(n_d);
   if (!(q_min > 0.0)) return {};

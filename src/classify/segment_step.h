@@ -54,7 +54,7 @@ struct SegmentPlan {
 // N.L unclamped and clamp it per pixel: max(., 0) is 1-Lipschitz, so N.L's own interpolation
 // error (already in |f''|) bounds the result, and that light's kink term goes. It costs a
 // fourth interpolated channel, so the plan splits only the light whose kink weighs most, and
-// only where that makes the segments longer (docs/PERFORMANCE.md, session 21).
+// only where that makes the segments longer (4d691e9).
 SegmentPlan hybrid_triangle_step(const SegmentStepInput& in, float tol);
 
 // --max-error in LSB to the interpolation tolerance in colour units: half an LSB goes to the

@@ -31,7 +31,7 @@ inline constexpr int kMaxTilePx = 256;
 // below kSizedTileMinPx. Large tiles pay each triangle's per-tile work (placement, planes,
 // the hybrid step, auto's path dispatch) fewer times: on 2 threads 128 px against 64 px took
 // spot 4K auto 2.67 vs 3.38 ms and gouraud 2.09 vs 2.30, bunny auto 4.18 vs 4.40, dragon
-// 21.5 vs 22.2 (docs/PERFORMANCE.md, session 14); 256 px gained nothing more. Many workers
+// 21.5 vs 22.2 (28a9ce8); 256 px gained nothing more. Many workers
 // need small tiles instead: the load-balance model of docs/SCALING.md puts the 1080p dragon
 // at 7.8x on 8 workers with 64 px (510 tiles) against 7.2x with 128 px (135 tiles), and at
 // 56x on 64 workers with 16 px against 42x with 64 px: the largest tile is the critical
@@ -85,7 +85,7 @@ inline constexpr double kAutoFloatReserveLsb = 0.01;
 // Largest error of N.H as the float kernels compute it, for unit N and H at c = N.H near 1, in
 // units of u = 2^-24 (docs/STABILITY.md, "B1"): |N| after the 1/sqrt (sqrt and a division) is
 // 1 within 4.5u, |H| (glm::normalize) within 3.5u, and the three-term dot product rounds within
-// 3u: 11u, kept at the 12u of the Newton 1/sqrt used until session 15 (5.5u), so that the
+// 3u: 11u, kept at the 12u of the Newton 1/sqrt used before 636009e (5.5u), so that the
 // double fallback's threshold did not move.
 // Through c^n it becomes a relative error of n times that: 0.3 % at n = 1e4, 72 % at 1e6.
 inline constexpr double kFloatNdotHError = 12.0 * 0x1p-24;
@@ -113,7 +113,8 @@ inline constexpr int kVertexLightBatch = 256;
 // tile's queue (shade/pixel_queue.h) and are lit a full vector at a time. The queue is lit as
 // soon as it holds one vector (at most 16 floats) and a triangle's vector adds at most 16
 // more, so it never holds 32; lighting its last partial vector reads up to 16 past that: 64
-// entries (1 KiB of normals and indices) leave room. Measured in docs/PERFORMANCE.md.
+// entries (1 KiB of normals and indices) leave room. Measured: docs/PERFORMANCE.md, "Kept, and
+// what it bought".
 inline constexpr int kPixelQueueCapacity = 64;
 
 // Largest specular exponent accepted: the kernels' approximations are specified up to 1e6.

@@ -2,7 +2,7 @@
 // decided once and kept in the triangle's record. The hybrid kernel draws a triangle in every
 // tile it covers, about 2.5 tiles a triangle on the 4K spot frame, and deciding there cost
 // each of them about 0.4 us (0.2 us since the decision skips acos and cos and one pow;
-// docs/PERFORMANCE.md, session 18).
+// ce93b34).
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -50,10 +50,10 @@ HWY_INLINE V FastExp2(D d, V y) {
 }
 
 // fast_math::inv_sqrt in lanes, bit for bit: sqrt, then a division, both correctly rounded, so
-// a pixel gets the same bits whatever width shaded it. Until session 15 this was an
+// a pixel gets the same bits whatever width shaded it. Before 636009e this was an
 // integer-shift estimate and three Newton steps, 14 multiplies and subtractions on the FP pipes
 // that the rest of a shading kernel also needs. Sqrt and division run on the divider instead,
-// beside that work (docs/PERFORMANCE.md, "Session 15").
+// beside that work.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V InvSqrt(D d, V x) {
   return hn::Div(hn::Set(d, 1.0f), hn::Sqrt(x));

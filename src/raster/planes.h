@@ -24,7 +24,7 @@ struct Barycentrics {
 
 // Written in place: returned by value into an existing TriangleInTile, GCC built the struct in
 // a temporary with scalar stores and copied it with one 64-byte load, which cannot be forwarded
-// from those stores: a tenth of dragon_871k's per-triangle body (perf, session 12).
+// from those stores: a tenth of dragon_871k's per-triangle body (perf; 465a2dc).
 FASTSHADE_FORCE_INLINE void set_barycentrics(const SetupTriangle& t, const TriangleEdges& te, Barycentrics& b) {
   // The anchor: the first pixel centre of the whole triangle's box (as triangle setup bounds
   // it, so a whole triangle's record holds it already), so that the parts of a split triangle

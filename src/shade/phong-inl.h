@@ -98,7 +98,7 @@ void DrawPhong(const Frame& frame, uint32_t entry, const TileTarget& tt) {
     ready = true;
   };
   // Inlined into the span loop, where the planes' constants stay in registers: called per
-  // vector, it reloaded them all (about 25 broadcasts a vector, perf annotate, session 14).
+  // vector, it reloaded them all (about 25 broadcasts a vector, perf annotate; cd62cd8).
   auto shade = [&](auto d, const auto& o) __attribute__((always_inline)) {
     if (!ready) set_up();
     if constexpr (kQueued) {

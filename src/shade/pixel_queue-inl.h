@@ -61,9 +61,9 @@ void LightQueue(PixelQueue& q, const TileTarget& tt, bool all) {
 // queue is lit once it holds a whole vector. AVX-512 compresses lanes natively, in a register
 // and then stored as a whole vector past the count (the capacity allows it): the form that
 // compresses straight to memory (CompressStore) is microcoded on Zen 4, 21.5 ns against
-// 1.4 ns a vector (docs/PERFORMANCE.md, session 16). On narrower targets Highway emulates the
+// 1.4 ns a vector (f7e0bfb). On narrower targets Highway emulates the
 // compress with tables, which cost more than copying the passed lanes one by one (callgrind,
-// AVX2, bunny phong: 331 M instructions against 258 M; session 11).
+// AVX2, bunny phong: 331 M instructions against 258 M; 7839c40).
 template <LobeKernel kLobe, class D, class V = hn::Vec<D>>
 HWY_INLINE void EnqueuePassed(D d, hn::Mask<D> pass, V z, V nx, V ny, V nz, const int32_t* lane_at,
                               const PhongSpanInput& in, const TileTarget& tt) {

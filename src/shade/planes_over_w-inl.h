@@ -2,7 +2,7 @@
 // Highway "-inl.h"): make_plane() in raster/planes.h is the scalar reference, bit for bit.
 // Every shaded triangle of a dense mesh sets up four planes (three components over w and 1/w):
 // that set-up was a fifth of the dragon's gouraud back end, three quarters of it the planes in
-// scalar doubles (callgrind, docs/PERFORMANCE.md session 9).
+// scalar doubles (callgrind; a930516).
 #if defined(FASTSHADE_SHADE_PLANES_OVER_W_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FASTSHADE_SHADE_PLANES_OVER_W_INL_H_
 #undef FASTSHADE_SHADE_PLANES_OVER_W_INL_H_
@@ -23,7 +23,7 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // Lanes c, c + 1, ... of (v.x, v.y, v.z, 1), built in registers: stored as four floats and
-// loaded as one vector, they waited on a store that cannot be forwarded (perf, session 12).
+// loaded as one vector, they waited on a store that cannot be forwarded (perf; d0aa0e4).
 template <class DF>
 HWY_INLINE hn::Vec<DF> ComponentsOf(DF df, const glm::vec3& v, std::size_t c) {
   const auto lane = hn::Iota(df, static_cast<float>(c));

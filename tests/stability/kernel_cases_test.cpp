@@ -267,7 +267,7 @@ TEST_F(StabilityKernels, SliverOfPointTwoPxSquaredAnd2000PxLong) {
     });
   }
   EXPECT_GT(covered, 10) << "the slivers must cover pixel centres to test anything";
-  // The sliver's float planes: see docs/STABILITY.md, "Slivers".
+  // The sliver's float planes (docs/STABILITY.md, "Cases").
   expect_within("0.2 px^2 sliver, 2000 px long (" + std::to_string(covered) + " px covered)", "phong_span", worst,
                 phong_bound(light));
 }
