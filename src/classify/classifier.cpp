@@ -1,10 +1,11 @@
-#include "classify/classify_limits.h"
 #include "classify/classifier.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "classify/classify_limits.h"
 
 namespace fastshade {
 

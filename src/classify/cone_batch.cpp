@@ -9,8 +9,8 @@
 #include <hwy/highway.h>
 
 #include "classify/classify_limits.h"
-#include "core/dispatch.h"
 #include "classify/cone_batch.h"
+#include "core/dispatch.h"
 #include "core/dot3-inl.h"
 #include "core/mask_bits-inl.h"
 

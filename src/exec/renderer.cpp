@@ -8,8 +8,8 @@
 
 #include "classify/classifier.h"
 #include "core/simd_target.h"
-#include "exec/frame_profile.h"
 #include "exec/exec_limits.h"
+#include "exec/frame_profile.h"
 #include "exec/frame_stats.h"
 #include "exec/resolve_options.h"
 #include "exec/tile_executor.h"

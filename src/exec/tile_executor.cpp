@@ -9,8 +9,8 @@
 #include <tbb/partitioner.h>
 
 #include "core/force_inline.h"
-#include "exec/frame_profile.h"
 #include "exec/exec_limits.h"
+#include "exec/frame_profile.h"
 #include "exec/tile_io.h"
 #include "light/lighting.h"
 #include "shade/pixel_queue.h"

@@ -6,8 +6,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/simd_target.h"
 #include "core/limits.h"
+#include "core/simd_target.h"
 #include "frame/shade_constants.h"
 #include "frame/shade_path.h"
 

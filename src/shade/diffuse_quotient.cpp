@@ -1,7 +1,5 @@
 // The diffuse quotient's set-up and its scalar twin (shade/diffuse_quotient.h).
-#include "shade/shade_limits.h"
 #include "shade/diffuse_quotient.h"
-#include "shade/span_kernels_testing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include "light/fast_math.h"
+#include "shade/shade_limits.h"
+#include "shade/span_kernels_testing.h"
 
 namespace fastshade {
 

@@ -10,10 +10,10 @@
 #include <hwy/highway.h>
 
 #include "core/dispatch.h"
-#include "shade/scalar_twin.h"
 #include "light/lighting.h"
 #include "shade/methods.h"
 #include "shade/planes_over_w-inl.h"
+#include "shade/scalar_twin.h"
 #include "shade/span_loop-inl.h"
 
 HWY_BEFORE_NAMESPACE();

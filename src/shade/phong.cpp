@@ -8,12 +8,12 @@
 #include <hwy/highway.h>
 
 #include "core/dispatch.h"
-#include "shade/scalar_twin.h"
 #include "light/brdf_variants.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/methods.h"
 #include "shade/phong-inl.h"
 #include "shade/pixel_queue.h"
+#include "shade/scalar_twin.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

@@ -8,13 +8,13 @@
 
 #include <hwy/highway.h>
 
-#include "shade/shade_limits.h"
 #include "core/dispatch.h"
-#include "shade/scalar_twin.h"
 #include "light/brdf_variants.h"
 #include "shade/methods.h"
 #include "shade/normal_blocks.h"
 #include "shade/phong-inl.h"
+#include "shade/scalar_twin.h"
+#include "shade/shade_limits.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace fastshade {

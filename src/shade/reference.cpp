@@ -2,8 +2,8 @@
 // perspective-correct normal, normalised, and Blinn-Phong, all in double. Scalar on purpose.
 #include <glm/geometric.hpp>
 
-#include "raster/triangle_in_tile.h"
 #include "light/lighting.h"
+#include "raster/triangle_in_tile.h"
 #include "shade/methods.h"
 
 namespace fastshade {

@@ -16,8 +16,8 @@
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
 #include "frame/edge_function.h"
-#include "raster/planes.h"
 #include "light/brdf.h"
+#include "raster/planes.h"
 
 namespace fastshade {
 namespace {

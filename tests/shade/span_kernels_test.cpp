@@ -9,13 +9,13 @@
 
 #include <glm/geometric.hpp>
 
-#include "shade/shade_limits.h"
 #include "classify/segment_step.h"
 #include "core/simd_target.h"
 #include "frame/edge_function.h"
 #include "light/brdf.h"
 #include "shade/diffuse_quotient.h"
 #include "shade/normal_blocks.h"
+#include "shade/shade_limits.h"
 #include "shade/span_kernels_testing.h"
 
 namespace fastshade {

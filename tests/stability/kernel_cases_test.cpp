@@ -12,16 +12,16 @@
 
 #include <glm/geometric.hpp>
 
-#include "shade/shade_limits.h"
 #include "classify/segment_step.h"
 #include "core/simd_target.h"
 #include "frame/edge_function.h"
-#include "raster/spans.h"
 #include "light/brdf.h"
 #include "light/fast_math.h"
 #include "light/lighting.h"
+#include "raster/spans.h"
 #include "shade/method.h"
 #include "shade/normal_blocks.h"
+#include "shade/shade_limits.h"
 #include "shade/span_kernels_testing.h"
 #include "stability/stability_bounds.h"
 #include "stability/stability_harness.h"
