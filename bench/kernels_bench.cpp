@@ -85,21 +85,29 @@ void register_all() {
   for (const char* isa_name : {"scalar", "sse4", "avx2", "avx512"}) {
     const std::string isa = isa_name;
     benchmark::RegisterBenchmark(("gouraud_span/" + isa).c_str(), [isa](benchmark::State& st) {
-      run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) { gouraud_span(simd, s.gouraud, false, kY, kX0, kX0 + kSpan - 1, r); });
+      run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) {
+        gouraud_span(simd, s.gouraud, false, kY, kX0, kX0 + kSpan - 1, r);
+      });
     });
     benchmark::RegisterBenchmark(("phong_span/" + isa).c_str(), [isa](benchmark::State& st) {
-      run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) { phong_span(simd, s.phong, kY, kX0, kX0 + kSpan - 1, r); });
+      run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) {
+        phong_span(simd, s.phong, kY, kX0, kX0 + kSpan - 1, r);
+      });
     });
     for (int step : {4, 16})
       benchmark::RegisterBenchmark(("hybrid_span_step" + std::to_string(step) + "/" + isa).c_str(),
                                    [isa, step](benchmark::State& st) {
                                      run(st, isa, [step](SimdTarget simd, Setup& s, RowTarget r) {
-                                       hybrid_span(simd, s.phong, {step, kX0, kX0 + kSpan - 1}, kY, kX0, kX0 + kSpan - 1, r);
+                                       hybrid_span(simd, s.phong, {step, kX0, kX0 + kSpan - 1}, kY, kX0,
+                                                   kX0 + kSpan - 1, r);
                                      });
                                    });
     for (const char* brdf : {"schlick", "schlick-pow2", "poly3"})
       benchmark::RegisterBenchmark(("phong_span_" + std::string(brdf) + "/" + isa).c_str(), [isa, brdf](benchmark::State& st) {
-        run(st, isa, [](SimdTarget simd, Setup& s, RowTarget r) { phong_span(simd, s.phong, kY, kX0, kX0 + kSpan - 1, r); }, brdf);
+        run(
+            st, isa,
+            [](SimdTarget simd, Setup& s, RowTarget r) { phong_span(simd, s.phong, kY, kX0, kX0 + kSpan - 1, r); },
+            brdf);
       });
   }
 }

@@ -11,7 +11,7 @@ double arc_max(const dvec3& a, const dvec3& b, const dvec3& x) {
   const double ends = std::max(glm::dot(a, x), glm::dot(b, x));
   // The arc lies in the plane through a, b and the origin, with normal k. The great circle's
   // nearest point to x is x's projection x_p onto that plane, direction u, at x . u = |x_p| =
-  // |x x k| / |k| (NOTES.md's closed-form peak sqrt((X^2 + Y^2 - 2XYc) / (1 - c^2)), without
+  // |x x k| / |k| (docs/PAPER.md's closed-form peak sqrt((X^2 + Y^2 - 2XYc) / (1 - c^2)), without
   // dividing by 1 - c^2, which vanishes for nearly equal normals; and not as
   // sqrt(|x|^2 - (x . k)^2 / |k|^2), which cancels where x is nearly along k and then
   // understates the peak by up to 1e-8). No square root or division before the tests below:

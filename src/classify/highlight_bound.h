@@ -1,7 +1,8 @@
 // Bounds of x . n over a triangle's interpolated normals n = normalize(sum lambda_i n_i), the
-// normals the pipeline draws (linear, then normalised). The classifier and hybrid's step
-// decision both rest on these. Double precision: at n = 1e6 a highlight lives where
-// N.H > 1 - 6e-6, finer than float's resolution of an angle (NOTES.md section 2).
+// normals the pipeline draws (linear, then normalised). The classifier and hybrid's step decision
+// both rest on these. Double precision: at n = 1e6 a highlight lives where N.H > 1 - 6e-6, finer
+// than float's resolution of an angle (docs/PAPER.md, "Peaks of N·H along an edge and inside a
+// triangle").
 #pragma once
 #include <glm/vec3.hpp>
 
@@ -10,8 +11,9 @@ namespace fastshade {
 using dvec3 = glm::dvec3;
 
 // Largest x . normalize(lerp(a, b, t)) for t in [0, 1], a and b unit: the endpoints, or the
-// interior peak of eq. 3 (NOTES.md section 2) when the great circle's closest point to x lies
-// between a and b. Antiparallel a, b: the lerp passes through zero, normals flip from a to b.
+// interior peak of eq. 3 (docs/PAPER.md, "The numerically stable form of eq. 3") when the great
+// circle's closest point to x lies between a and b. Antiparallel a, b: the lerp passes through
+// zero, normals flip from a to b.
 double arc_max(const dvec3& a, const dvec3& b, const dvec3& x);
 
 // Is x (unit or not) inside the cone spanned by the three normals (then the peak is |x|)?

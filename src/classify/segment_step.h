@@ -1,6 +1,7 @@
-// Hybrid Gouraud/Phong segments (the paper, section II; NOTES.md section 6): the segment
-// length of a triangle, decided once per triangle by the front end (front/segment_steps.h) and
-// read by the hybrid kernel (shade/hybrid.cpp) in every tile the triangle covers.
+// Hybrid Gouraud/Phong segments (the paper, section II; docs/PAPER.md, "Hybrid segments"): the
+// segment length of a triangle, decided once per triangle by the front end
+// (front/segment_steps.h) and read by the hybrid kernel (shade/hybrid.cpp) in every tile the
+// triangle covers.
 #pragma once
 #include <algorithm>
 
@@ -40,14 +41,15 @@ struct SegmentPlan {
 // the row, plus kd |u'| L / 4 where the terminator's kink crosses it. |f''| is bounded over
 // the whole triangle from the normal's turn rate |u'| (the part of d(n/w)/dx across the
 // normals, over the smallest |n/w| anywhere on the triangle), the rate's change |u''|, and the
-// colour's derivatives at c_max = max N.H (edges' closed-form maxima, NOTES.md section 2, or
-// 1 when H lies inside the normals' cone); summed over lights weighted by |colour|
-// (derivation in segment_step.cpp; docs/CLASSIFIER.md says what the earlier estimate missed).
+// colour's derivatives at c_max = max N.H (edges' closed-form maxima, docs/PAPER.md, "Peaks of
+// N·H along an edge and inside a triangle", or 1 when H lies inside the normals' cone); summed
+// over lights weighted by |colour| (derivation in segment_step.cpp; docs/CLASSIFIER.md says what
+// the earlier estimate missed).
 // A local viewer's H moves too: by the view direction's spread over the triangle and its turn
 // along x (docs/STABILITY.md, "B2").
 // The longest L whose bound is within tol wins (tol less the specular terms, where the plan
-// leaves them out). One fixed length per object fails badly
-// (NOTES.md: 19 LSB seen); this adapts to the triangle's curvature and to how near it is to a
+// leaves them out). One fixed length per object fails badly (docs/PAPER.md, "Hybrid segments":
+// 19 LSB seen); this adapts to the triangle's curvature and to how near it is to a
 // highlight. A decision per 16-px block was measured first and cost more than the Phong
 // evaluations it saved on small triangles (3x phong's time on the 4K spot frame).
 // Where a light's terminator crosses the triangle, hybrid can instead interpolate that light's

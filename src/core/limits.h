@@ -47,11 +47,11 @@ inline constexpr int kTilesPerWorker = 32;
 // partly by streaming and partly by ordinary stores costs a trip to memory.
 inline constexpr int kCacheLineBytes = 64;
 
-// Attributes are seeded from their plane equation at every aligned block of this many pixels
-// in x and stepped by constant increments inside it (the paper's eq. 1-2, lanes i = seed +
-// i dI): a pixel's value depends only on its position, never on the tile, the span or the
-// vector width that drew it, and no drift builds up (forward differencing in float drifts
-// 0.4 LSB over 65536 px: NOTES.md section 1). 16 = the widest float vector (AVX-512).
+// Attributes are seeded from their plane equation at every aligned block of this many pixels in x
+// and stepped by constant increments inside it (the paper's eq. 1-2, lanes i = seed + i dI): a
+// pixel's value depends only on its position, never on the tile, the span or the vector width that
+// drew it, and no drift builds up (forward differencing in float drifts 0.4 LSB over 65536 px:
+// docs/PAPER.md, "Plane evaluation precision"). 16 = the widest float vector (AVX-512).
 inline constexpr int kSeedBlockPx = 16;
 static_assert((kSeedBlockPx & (kSeedBlockPx - 1)) == 0, "blocks are found by masking");
 

@@ -21,7 +21,8 @@ struct Edge {
 
 // Edge functions run on doubled fixed-point coordinates, one fractional bit more than the
 // vertices have (9), so that the edge midpoints of Sierpinski subtriangles are exact points
-// too (NOTES.md: midpoints of 8-bit vertices need a ninth bit). A doubled coordinate is below
+// too (docs/PAPER.md, "Sierpinski subtriangles and the ninth bit": midpoints of 8-bit vertices
+// need a ninth bit). A doubled coordinate is below
 // 2^25, an edge value below 2^51: exact in int64 and in a double.
 inline constexpr int64_t kEdgeUnitsPerPixel = 2 * limits::kSubpixelOne;
 

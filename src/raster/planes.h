@@ -9,7 +9,7 @@ namespace fastshade {
 
 // q(px, py) = v0 + gx (px - ax) + gy (py - ay) at pixel centres, clamped to [lo, hi], the range
 // of the three vertex values: the clamp keeps slivers, whose float gradients may be far off
-// (NOTES.md section 1), inside what the triangle can actually take.
+// (docs/PAPER.md, "Plane evaluation precision"), inside what the triangle can actually take.
 struct Plane {
   float v0, gx, gy, lo, hi;
 };

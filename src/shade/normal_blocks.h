@@ -12,12 +12,13 @@
 //    else the weights are the exact ones scaled to sum 1 (folds of antiparallel normals too);
 //  - adaptive (eq. 6): those weights times g, g = 1 where skipping normalisation errs within
 //    the budget (the weighted unit normals are short by at most 1 - cos(psi/2), psi the ends'
-//    angle; NOTES.md section 4) and g = 1 / |sum| else;
+//    angle; docs/PAPER.md, "Normal blocks") and g = 1 / |sum| else;
 //  - equal-angle (eq. 7): alpha = sin((L - k) phi) / sin(L phi), beta = sin(k phi) / sin(L phi)
 //    with the per-pixel angle phi = psi / L, the sines from the recurrence in its stable
-//    difference form d += kappa s, s += d, kappa = -4 sin^2(phi / 2) (NOTES.md section 5: the
-//    printed form rounds 2 cos(phi) to 2 below phi = 2.4e-4), re-seeded every block; where
-//    even angles stray from the exact ones past the budget, the exact weights, normalised.
+//    difference form d += kappa s, s += d, kappa = -4 sin^2(phi / 2) (docs/PAPER.md, "Rotation
+//    by the difference form": the printed form rounds 2 cos(phi) to 2 below phi = 2.4e-4),
+//    re-seeded every block; where even angles stray from the exact ones past the budget, the
+//    exact weights, normalised.
 #pragma once
 #include <string>
 #include <string_view>

@@ -79,7 +79,7 @@ TEST(Brdf, ErrorAgainstCosPowerWithinDocumentedBounds) {
 }
 
 TEST(Brdf, SchlickPow2ImprovesWithShininessAsNotesSay) {
-  // NOTES.md section 3: .012 at n = 5 down to 6e-6 at n = 1e4.
+  // docs/PAPER.md, "Reading eq. 5": .012 at n = 5 down to 6e-6 at n = 1e4.
   const BrdfChoice choice = parse_brdf("schlick-pow2", "test");
   EXPECT_LT(max_error(make_brdf(choice, 1e4), 1e4), 2e-5);
   EXPECT_LT(max_error(make_brdf(choice, 1000), 1000), 5e-4);

@@ -161,8 +161,8 @@ TEST(StabilityScenes, VertexNormalsEqualNearlyEqualAntiparallel) {
   }
 }
 
-// Per-pixel normal angles of 2e-4 rad, below where float rounds 2 cos(phi) to 2 (NOTES.md
-// section 5): the equal-angle recurrence's stiff case.
+// Per-pixel normal angles of 2e-4 rad, below where float rounds 2 cos(phi) to 2 (docs/PAPER.md,
+// "Rotation by the difference form"): the equal-angle recurrence's stiff case.
 TEST(StabilityScenes, PerPixelNormalAnglesBelowTwoPointFourEMinusFour) {
   run_case(dome_case("per-pixel normal angle 2e-4 rad", 2000, 64 * 2e-4));
   run_case(dome_case("per-pixel normal angle 1e-6 rad", 2000, 64 * 1e-6));
