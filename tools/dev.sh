@@ -38,4 +38,10 @@ if [ "$mode" = render ]; then
   exec build/fastshade render -o out/default.png
 fi
 cmake --build build -j "$jobs" >&2
+# ctest lists skipped tests by name only: say once why the shared-model ones skipped.
+models=${FASTSHADE_SHARED_MODELS:-../shared/models}
+if [ ! -d "$models" ]; then
+  echo "note: $models is missing: the tests that render the shared models skip (clone ../shared" \
+       "beside this checkout, or set FASTSHADE_SHARED_MODELS=DIR)" >&2
+fi
 exec ctest --test-dir build --output-on-failure -j "$jobs"

@@ -2,6 +2,7 @@
 #pragma once
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,11 +13,33 @@
 
 namespace fastshade {
 
+// A calibrated pinhole camera's intrinsic matrix K, in pixels, in OpenCV's convention: a
+// camera-space point (X, Y, Z), Z forward, lands at u = fx X/Z + cx, v = fy Y/Z + cy, where the
+// centre of pixel (0, 0) is u = v = 0 and v grows downward.
+struct Intrinsics {
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+};
+
+// The axes a camera-to-world pose is given in. OpenCV: x right, y down, z forward. OpenGL: x
+// right, y up, looking down -z.
+enum class PoseConvention { OpenCV, OpenGL };
+
 struct Camera {
   glm::vec3 eye{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
   float fovy_deg = 45.0f;
   float near = 0.1f, far = 100.0f;
+  // A calibrated camera (calibrated_camera()): K and the camera-to-world pose in OpenGL axes, a
+  // rigid transform, which replace eye, target, up and fovy_deg.
+  std::optional<Intrinsics> intrinsics;
+  glm::dmat4 camera_to_world{1.0};
 };
+
+// A calibrated camera from K and a camera-to-world pose (4x4, a rotation and a translation) in
+// either convention, seeing from `near` to `far` along its axis. Throws InputError naming the
+// value at fault ("intrinsics.fx: expected a finite number > 0, got 0", "pose: not a rigid
+// transform ...").
+Camera calibrated_camera(const Intrinsics& k, const glm::dmat4& pose, PoseConvention convention, float near = 0.01f,
+                         float far = 1000.0f);
 
 enum class LightSpace { World, View };
 

@@ -29,6 +29,15 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
 }
 
 json camera_json(const Camera& c) {
+  if (c.intrinsics) {  // as the scene format writes a calibrated camera, in OpenGL axes
+    json pose = json::array();
+    for (int row = 0; row < 4; ++row)
+      pose.push_back({c.camera_to_world[0][row], c.camera_to_world[1][row], c.camera_to_world[2][row],
+                      c.camera_to_world[3][row]});
+    const Intrinsics& k = *c.intrinsics;
+    return {{"intrinsics", {{"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}}},
+            {"pose", pose}, {"convention", "opengl"}, {"near", c.near}, {"far", c.far}};
+  }
   const auto vec = [](const glm::vec3& v) { return json::array({v.x, v.y, v.z}); };
   return {{"eye", vec(c.eye)}, {"target", vec(c.target)}, {"up", vec(c.up)},
           {"fovy_deg", c.fovy_deg}, {"near", c.near}, {"far", c.far}};

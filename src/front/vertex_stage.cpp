@@ -14,9 +14,42 @@
 
 namespace fastshade {
 
+namespace {
+
+// The clip-space projection of a calibrated camera (scene.h Intrinsics) for a width x height
+// image: pixel column u's centre sits at window x = u + 0.5, row v's at y = v + 0.5 from the top
+// (front/projection.h project()), so x_ndc = 2 (fx X/Z + cx + 0.5) / width - 1 with Z = -z_view,
+// and y_ndc = 1 - 2 (fy Y/Z + cy + 0.5) / height with Y = -y_view; depth as glm::perspective.
+glm::dmat4 intrinsic_projection(const Intrinsics& k, int width, int height, double near, double far) {
+  glm::dmat4 p(0.0);  // p[column][row]
+  p[0][0] = 2.0 * k.fx / width;
+  p[2][0] = 1.0 - 2.0 * (k.cx + 0.5) / width;
+  p[1][1] = 2.0 * k.fy / height;
+  p[2][1] = 2.0 * (k.cy + 0.5) / height - 1.0;
+  p[2][2] = -(far + near) / (far - near);
+  p[3][2] = -2.0 * far * near / (far - near);
+  p[2][3] = -1.0;
+  return p;
+}
+
+// The inverse of a rigid camera-to-world pose, exactly: the rotation transposed.
+glm::dmat4 world_to_camera(const glm::dmat4& camera_to_world) {
+  const glm::dmat3 r_t = glm::transpose(glm::dmat3(camera_to_world));
+  glm::dmat4 view(r_t);
+  view[3] = glm::dvec4(-(r_t * glm::dvec3(camera_to_world[3])), 1.0);
+  return view;
+}
+
+}  // namespace
+
 ViewTransform view_transform(const Scene& scene) {
   const Camera& c = scene.camera;
   ViewTransform xf;
+  if (c.intrinsics) {
+    xf.view = glm::mat4(world_to_camera(c.camera_to_world));
+    xf.proj = glm::mat4(intrinsic_projection(*c.intrinsics, scene.width, scene.height, c.near, c.far));
+    return xf;
+  }
   xf.view = glm::lookAt(c.eye, c.target, c.up);
   const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
   xf.proj = glm::perspective(glm::radians(c.fovy_deg), aspect, c.near, c.far);

@@ -7,6 +7,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "fastshade/error.h"
 #include "io/json_path.h"
 #include "io/scene_camera.h"
 
@@ -96,6 +97,8 @@ std::string SceneTemplate::canonical() const { return root_.dump(); }
 
 Camera orbit_camera(const Camera& camera, double angle_deg) {
   if (angle_deg == 0.0) return camera;
+  // A calibrated camera has a pose but no target to turn about.
+  if (camera.intrinsics) throw InputError("camera", "a calibrated camera (intrinsics) has one view only: use --views 1");
   const glm::dvec3 target(camera.target);
   const glm::dvec3 offset = glm::dvec3(camera.eye) - target;
   const double c = std::cos(glm::radians(angle_deg)), s = std::sin(glm::radians(angle_deg));

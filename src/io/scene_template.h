@@ -48,7 +48,8 @@ class SceneTemplate {
 // The camera turned by `angle_deg` about the vertical axis through its target: the eye moves
 // on the horizontal circle around the target, counter-clockwise seen from above (+Y), so at
 // 90° a fit camera looks from +X; target, up, fovy, near and far stay. Computed in double from
-// the float camera, rounded to float; 0° returns the camera unchanged.
+// the float camera, rounded to float; 0° returns the camera unchanged. A calibrated camera
+// (intrinsics) has no orbit: any other angle throws InputError.
 Camera orbit_camera(const Camera& camera, double angle_deg);
 
 // The embedded default template for fastshade batch; scenes/batch.json holds the same text. A
