@@ -46,6 +46,11 @@ Mesh load_mesh(const std::filesystem::path& path, const MeshLoadOptions& options
 // InputError(mesh.source, ...) if a triangle index is out of range.
 void recompute_normals(Mesh& mesh);
 
+// A mesh built in code, checked as a loaded one is: at least one triangle, finite vertices,
+// triangle indices in range, normals none or one finite non-zero one per vertex. Throws
+// InputError(mesh.source, "vertex 7 is not finite").
+void check_mesh(const Mesh& mesh);
+
 struct MeshInfo {
   std::size_t vertices = 0;  // as OpenMesh holds them (its non-manifold copies included)
   std::size_t faces = 0;     // triangles after triangulation

@@ -91,6 +91,8 @@ struct RenderStats {
   int frames = 0;
   double mpix_per_s() const;  // covered pixels / total time
   double mtri_per_s() const;  // triangles_in / total time
+  // Every field as one JSON object (the keys of `render --stats`; docs/PIPELINE.md, "Statistics").
+  std::string to_json() const;
 };
 
 // Renders frames of one scene; keeps its per-frame arena and per-thread scratch between

@@ -34,6 +34,11 @@ struct Camera {
   glm::dmat4 camera_to_world{1.0};
 };
 
+// An eye/target camera, checked as the scene format checks one: throws InputError naming the
+// value at fault ("target: must differ from eye", "fovy_deg: ...").
+Camera look_at_camera(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up = {0, 1, 0},
+                      float fovy_deg = 45.0f, float near = 0.1f, float far = 100.0f);
+
 // A calibrated camera from K and a camera-to-world pose (4x4, a rotation and a translation) in
 // either convention, seeing from `near` to `far` along its axis. Throws InputError naming the
 // value at fault ("intrinsics.fx: expected a finite number > 0, got 0", "pose: not a rigid
@@ -90,6 +95,13 @@ Scene load_scene(const std::filesystem::path& path);
 // The same from JSON text; `source` names it in messages, `base_dir` resolves mesh paths.
 Scene parse_scene(const std::string& json_text, const std::string& source,
                   const std::filesystem::path& base_dir);
+
+// A scene built in code, checked as a scene file is: image size, colours, lights, materials,
+// objects (mesh present, finite vertices, triangle indices in range, normals one per vertex,
+// material index, finite model matrix) and camera. Throws InputError naming the part at fault
+// ("materials[1].shininess: expected [1, 1e+06], got 0.5", "objects[0].mesh: vertex 7 is not
+// finite"). Renderer does not call it: a parsed scene is already checked.
+void check_scene(const Scene& scene);
 
 // The embedded default scene: procedural meshes only.
 const char* default_scene_json();

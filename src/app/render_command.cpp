@@ -14,44 +14,6 @@ namespace fastshade {
 
 namespace {
 
-nlohmann::json stats_json(const RenderStats& s) {
-  nlohmann::json paths = nlohmann::json::object();
-  for (const PathStats& p : s.paths) paths[p.name] = {{"triangles", p.triangles}, {"pixels", p.pixels}};
-  nlohmann::json segments = nlohmann::json::object();
-  if (!s.segment_triangles.empty()) {  // arrays, in order of length (an object's keys sort as text)
-    nlohmann::json lengths = nlohmann::json::array();
-    for (std::size_t m = 0; m < s.segment_triangles.size(); ++m) lengths.push_back(1 << m);
-    segments = {{"length_px", lengths},
-                {"triangles", s.segment_triangles},
-                {"split_light", s.segment_split},
-                {"no_specular", s.segment_no_specular}};
-  }
-  return {{"triangles_in", s.triangles_in},
-          {"triangles_drawn", s.triangles_drawn},
-          {"triangles_dropped", s.triangles_dropped},
-          {"triangles_culled", s.triangles_culled},
-          {"triangles_hidden", s.triangles_hidden},
-          {"tiles_total", s.tiles_total},
-          {"tiles_nonempty", s.tiles_nonempty},
-          {"covered_pixels", s.covered_pixels},
-          {"threads", s.threads},
-          {"tile", s.tile},
-          {"isa", s.isa},
-          {"method", s.method},
-          {"frames", s.frames},
-          {"median_ms",
-           {{"front_end", s.median.front_end},
-            {"binning", s.median.binning},
-            {"raster_shade", s.median.raster_shade},
-            {"total", s.median.total}}},
-          {"mpix_per_s", s.mpix_per_s()},
-          {"mtri_per_s", s.mtri_per_s()},
-          {"paths", paths},
-          {"triangles_unclassified", s.triangles_unclassified},
-          {"hybrid_segments", segments},
-          {"left_out", s.left_out}};
-}
-
 // --explain: the plan in a few lines, on stdout after the summary.
 void print_explanation(const RenderStats& s, const RenderOptions& o) {
   std::printf("plan: method %s (%s)\n", s.method.c_str(), o.to_string().c_str());
@@ -97,7 +59,7 @@ int run_render(const RenderCommand& cmd) {
   const Image image = render(scene, options, cmd.frames, &stats);
   write_image(image, cmd.output);
   if (!cmd.stats_path.empty()) {
-    nlohmann::json json = stats_json(stats);
+    nlohmann::json json = nlohmann::json::parse(stats.to_json());
     if (calibration) json["calibration"] = calibration_json(*calibration);
     write_text_file(cmd.stats_path, json.dump(2) + "\n");
   }

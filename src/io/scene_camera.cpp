@@ -146,6 +146,22 @@ Camera make_calibrated(const Intrinsics& k, const glm::dmat4& pose, PoseConventi
 
 }  // namespace
 
+Camera look_at_camera(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up, float fovy_deg, float near,
+                      float far) {
+  const Camera camera{eye, target, up, fovy_deg, near, far};
+  if (auto [key, problem] = camera_problem(camera); !key.empty()) throw InputError(key, problem);
+  return camera;
+}
+
+void check_camera(const Camera& c) {
+  if (c.intrinsics) {
+    if (auto [key, problem] = calibrated_problem(*c.intrinsics, c.camera_to_world, c.near, c.far); !key.empty())
+      throw InputError("camera." + key, problem);
+  } else if (auto [key, problem] = camera_problem(c); !key.empty()) {
+    throw InputError("camera." + key, problem);
+  }
+}
+
 Camera calibrated_camera(const Intrinsics& k, const glm::dmat4& pose, PoseConvention convention, float near,
                          float far) {
   if (auto [key, problem] = calibrated_problem(k, pose, near, far); !key.empty()) throw InputError(key, problem);

@@ -1,4 +1,4 @@
-// The scene's "camera" key: explicit or fitted to the objects (internal to io/).
+// The scene's "camera" key: explicit, fitted to the objects or calibrated (internal to io/).
 #pragma once
 #include <vector>
 
@@ -13,5 +13,8 @@ namespace fastshade {
 // The objects must be resolved already: a fit camera frames their transformed vertices.
 Camera parse_camera(const json_path::Reader& reader, const nlohmann::json* camera,
                     const std::vector<Object>& objects);
+
+// A camera built in code, checked as parse_camera checks one; throws InputError("camera.KEY").
+void check_camera(const Camera& camera);
 
 }  // namespace fastshade

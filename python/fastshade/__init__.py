@@ -1,0 +1,83 @@
+"""fastshade: a multicore, tiled CPU renderer for Gouraud and Phong shading, no GPU or GL needed.
+
+    import fastshade, numpy as np
+    scene = fastshade.Scene(640, 480, ambient=(0.05, 0.05, 0.05))
+    scene.add_object(fastshade.load_mesh("bunny.ply"), fastshade.Material(shininess=50))
+    scene.add_light((0.3, 0.5, 1.0))
+    scene.camera = fastshade.Camera.fit()
+    frame = fastshade.render(scene, method="auto", max_error=1.0)
+    frame.color        # (480, 640, 3) uint8
+    frame.stats        # the keys of `fastshade render --stats`
+
+Every bad input raises fastshade.InputError (a ValueError) with the command line's one-line message.
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ._fastshade import Camera, InputError, Material, Mesh, Scene, _methods, _Renderer, load_mesh
+
+__all__ = ["Camera", "Frame", "InputError", "Material", "Mesh", "Renderer", "Scene", "load_mesh", "methods", "render"]
+
+
+# Every render option with its default, in the order the module takes them (README.md's
+# `render` flags, Python-named).
+_OPTIONS = {
+    "threads": 0, "method": "auto", "max_error": 1.0, "tile": 64, "isa": "best", "srgb": False,
+    "brdf": "exact", "normals": "normalize", "gouraud": "increments", "hidden_faces": "skip",
+    "spec_threshold": 1.0 / 510.0, "spec_method": "hybrid", "classifier": "bound", "classify_min_px": 80.0,
+}
+
+
+@dataclass
+class Frame:
+    """One rendered frame: `color` (H, W, 3) uint8 and `stats` (the keys of `render --stats`)."""
+
+    color: np.ndarray
+    stats: dict = field(default_factory=dict)
+
+
+class Renderer:
+    """Renders one scene with fixed options, keeping its buffers between frames.
+
+    The options are the command line's (docs/KERNELS.md, README.md): method ("auto", "reference",
+    "phong", "hybrid", "gouraud"), max_error (8-bit steps), threads (0: all), tile (pixels, a power
+    of two in [8, 256], or 0: sized from the image), isa ("scalar", "sse4", "avx2", "avx512",
+    "best": this renderer's own), srgb, brdf, normals, gouraud, hidden_faces, spec_threshold,
+    spec_method, classifier, classify_min_px. The scene is copied: changing it later changes
+    nothing here. The GIL is released while a frame renders.
+    """
+
+    def __init__(self, scene: Scene, **options):
+        unknown = sorted(set(options) - set(_OPTIONS))
+        if unknown:
+            raise InputError(f"{unknown[0]}: unknown option (expected one of: {', '.join(_OPTIONS)})")
+        values = []
+        for name, default in _OPTIONS.items():
+            value = options.get(name, default)
+            kind = type(default)
+            if kind is float and isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+                value = float(value)
+            if kind is int and isinstance(value, np.integer):
+                value = int(value)
+            if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+                raise InputError(f"{name}: expected {kind.__name__}, got {type(value).__name__} {value!r}")
+            values.append(value)
+        self._renderer = _Renderer(scene, *values)
+
+    def render(self) -> Frame:
+        color, stats = self._renderer.render()
+        return Frame(color=color, stats=json.loads(stats))
+
+
+def render(scene: Scene, **options) -> Frame:
+    """Renderer(scene, **options).render() in one call."""
+    return Renderer(scene, **options).render()
+
+
+def methods() -> dict[str, str]:
+    """The shading methods, each with one line on what it does."""
+    return dict(_methods())

@@ -1,0 +1,138 @@
+"""The Python module: numpy in and out, scenes in code and from files, cameras, errors."""
+import pathlib
+import re
+import threading
+
+import numpy as np
+import pytest
+
+import fastshade
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+
+
+def quad_mesh():
+    vertices = np.array([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], dtype=np.float64)
+    faces = np.array([[0, 1, 2], [0, 2, 3]], dtype=np.int64)
+    return fastshade.Mesh(vertices, faces)
+
+
+def lit_scene(mesh, width=64, height=48):
+    scene = fastshade.Scene(width, height, background=(0.1, 0.2, 0.3), ambient=(0.05, 0.05, 0.05))
+    scene.add_object(mesh, fastshade.Material(diffuse=(0.8, 0.6, 0.4), specular=(0.5, 0.5, 0.5), shininess=40))
+    scene.add_light((0.3, 0.5, 1.0))
+    scene.camera = fastshade.Camera.fit()
+    return scene
+
+
+def test_mesh_arrays_round_trip():
+    mesh = quad_mesh()
+    assert mesh.vertices.dtype == np.float32 and mesh.vertices.shape == (4, 3)
+    assert mesh.faces.dtype == np.uint32 and mesh.faces.tolist() == [[0, 1, 2], [0, 2, 3]]
+    # Area-weighted normals of a quad facing +Z.
+    np.testing.assert_allclose(mesh.normals, np.tile([0.0, 0.0, 1.0], (4, 1)), atol=1e-7)
+
+
+def test_render_returns_colour_and_stats():
+    frame = fastshade.render(lit_scene(quad_mesh()), threads=2)
+    assert frame.color.shape == (48, 64, 3) and frame.color.dtype == np.uint8
+    background = np.array([26, 51, 77])  # 0.1, 0.2, 0.3 quantised
+    assert (frame.color[0, 0] == background).all()
+    assert (frame.color != background).any(axis=2).sum() == frame.stats["covered_pixels"] > 0
+    assert frame.stats["triangles_in"] == 2 and frame.stats["method"] == "auto"
+
+
+def read_ppm(path):
+    data = path.read_bytes()
+    header = re.match(rb"P6\s+(\d+)\s+(\d+)\s+255\s", data)  # one whitespace byte before the pixels
+    width, height = int(header[1]), int(header[2])
+    return np.frombuffer(data[header.end():], dtype=np.uint8).reshape(height, width, 3)
+
+
+def test_colour_matches_the_command_line(tmp_path):
+    binary = REPO / "build" / "fastshade"
+    if not binary.exists():
+        pytest.skip(f"needs the command line at {binary} (bash tools/dev.sh render builds it)")
+    import subprocess
+    scene_file = REPO / "scenes" / "spheres.json"
+    for method in ("auto", "phong", "gouraud"):
+        out = tmp_path / f"{method}.ppm"
+        subprocess.run([str(binary), "render", str(scene_file), "-o", str(out), "--method", method, "--threads", "2"],
+                       check=True, capture_output=True)
+        frame = fastshade.render(fastshade.Scene.from_file(scene_file), threads=2, method=method)
+        assert np.array_equal(frame.color, read_ppm(out)), method
+
+
+def test_threads_and_tiles_give_identical_colour():
+    scene = lit_scene(quad_mesh(), 96, 80)
+    reference = fastshade.render(scene, threads=1, tile=64).color
+    for threads in (1, 2, 4):
+        for tile in (8, 64, 256):
+            assert np.array_equal(fastshade.render(scene, threads=threads, tile=tile).color, reference)
+
+
+def test_renderers_in_python_threads():
+    scene = lit_scene(quad_mesh(), 128, 96)
+    expected = fastshade.render(scene, threads=1).color
+    results = [None] * 4
+
+    def work(i):
+        results[i] = fastshade.Renderer(scene, threads=1, isa=fastshade_isas()[i % len(fastshade_isas())]).render().color
+
+    workers = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    for w in workers:
+        w.start()
+    for w in workers:
+        w.join()
+    for color in results:
+        assert np.array_equal(color, expected)
+
+
+def fastshade_isas():
+    isas = []
+    for isa in ("scalar", "sse4", "avx2", "avx512"):
+        try:
+            fastshade.Renderer(lit_scene(quad_mesh(), 8, 8), isa=isa)
+            isas.append(isa)
+        except fastshade.InputError:
+            pass
+    return isas
+
+
+def test_calibrated_camera_puts_the_quad_where_k_says():
+    vertices = np.array([[-0.02, -0.02, 0], [0.02, -0.02, 0], [0.02, 0.02, 0], [-0.02, 0.02, 0]]) + [0.1, -0.05, 2.0]
+    mesh = fastshade.Mesh(vertices, [[0, 1, 2], [0, 2, 3]])
+    scene = fastshade.Scene(256, 192, ambient=(0.5, 0.5, 0.5))
+    scene.add_object(mesh)
+    K = np.array([[500.0, 0, 120.3], [0, 450.0, 90.7], [0, 0, 1]])
+    scene.camera = fastshade.Camera.from_intrinsics(K, np.eye(4), convention="opencv")
+    color = fastshade.render(scene, threads=2).color
+    v, u = np.nonzero(color.any(axis=2))
+    assert abs(u.mean() - (500 * 0.1 / 2 + 120.3)) < 0.5
+    assert abs(v.mean() - (450 * -0.05 / 2 + 90.7)) < 0.5
+
+
+@pytest.mark.parametrize("make", [
+    lambda: fastshade.Mesh(np.zeros((4, 2)), [[0, 1, 2]]),
+    lambda: fastshade.Mesh(np.zeros((4, 3)), [[0, 1, 4]]),
+    lambda: fastshade.Mesh(np.zeros((4, 3)), [[0, 1, -1]]),
+    lambda: fastshade.Mesh(np.zeros((4, 3)), [[0.0, 1.0, 2.0]]),
+    lambda: fastshade.Mesh(np.full((3, 3), np.nan), [[0, 1, 2]]),
+    lambda: fastshade.Mesh("not an array", [[0, 1, 2]]),
+    lambda: fastshade.Material(shininess=0.5),
+    lambda: fastshade.Material(diffuse=(-1, 0, 0)),
+    lambda: fastshade.Scene(0, 10),
+    lambda: fastshade.Camera.look_at((0, 0, 1), (0, 0, 1)),
+    lambda: fastshade.Camera.from_intrinsics(np.array([[0.0, 0, 1], [0, 1, 1], [0, 0, 1]])),
+    lambda: fastshade.Camera.from_intrinsics(np.eye(3), 2 * np.eye(4)),
+    lambda: fastshade.Renderer(lit_scene(quad_mesh()), method="nope"),
+    lambda: fastshade.Renderer(lit_scene(quad_mesh()), no_such_option=1),
+    lambda: fastshade.Renderer(lit_scene(quad_mesh()), threads="two"),
+    lambda: fastshade.load_mesh("/no/such/mesh.obj"),
+    lambda: fastshade.Scene.from_file("/no/such/scene.json"),
+])
+def test_bad_input_is_an_input_error(make):
+    with pytest.raises(fastshade.InputError) as error:
+        make()
+    assert isinstance(error.value, ValueError)
+    assert "\n" not in str(error.value) and str(error.value)
