@@ -96,6 +96,10 @@ Scene load_scene(const std::filesystem::path& path);
 Scene parse_scene(const std::string& json_text, const std::string& source,
                   const std::filesystem::path& base_dir);
 
+// A material checked as a scene file's is (colours finite and >= 0, shininess in [1, 1e6]);
+// throws InputError naming `key` ("material.shininess: expected [1, 1e+06], got 0.5").
+void check_material(const Material& material, const std::string& key = "material");
+
 // A scene built in code, checked as a scene file is: image size, colours, lights, materials,
 // objects (mesh present, finite vertices, triangle indices in range, normals one per vertex,
 // material index, finite model matrix) and camera. Throws InputError naming the part at fault

@@ -39,15 +39,8 @@ glm::dmat4 to_dmat4(const Matrix4& a) {
 }
 
 Material make_material(const Vec3& diffuse, const Vec3& specular, double shininess) {
-  Material material{.name = "", .diffuse = to_vec3(diffuse), .specular = to_vec3(specular), .shininess = shininess};
-  for (int c = 0; c < 3; ++c) {
-    if (!(diffuse[c] >= 0 && std::isfinite(diffuse[c])))
-      throw InputError("diffuse", "expected each channel finite and >= 0");
-    if (!(specular[c] >= 0 && std::isfinite(specular[c])))
-      throw InputError("specular", "expected each channel finite and >= 0");
-  }
-  if (!(shininess >= 1.0 && shininess <= 1e6))
-    throw InputError("shininess", "expected [1, 1e6] (the Blinn-Phong exponent), got " + std::to_string(shininess));
+  const Material material{.name = "", .diffuse = to_vec3(diffuse), .specular = to_vec3(specular), .shininess = shininess};
+  check_material(material);
   return material;
 }
 

@@ -43,6 +43,14 @@ void check_mesh(const Mesh& mesh, const std::string& key) {
 
 }  // namespace
 
+void check_material(const Material& m, const std::string& key) {
+  check_color(m.diffuse, key + ".diffuse", 0.0f, HUGE_VALF);
+  check_color(m.specular, key + ".specular", 0.0f, HUGE_VALF);
+  if (!(m.shininess >= 1.0 && m.shininess <= limits::kMaxShininess))
+    throw InputError(key + ".shininess", "expected [1, " + format_number(limits::kMaxShininess) + "], got " +
+                                             format_number(m.shininess));
+}
+
 void check_mesh(const Mesh& mesh) { check_mesh(mesh, mesh.source.empty() ? std::string("mesh") : mesh.source); }
 
 void check_scene(const Scene& s) {
@@ -59,15 +67,7 @@ void check_scene(const Scene& s) {
     check_color(s.lights[i].color, key + ".color", 0.0f, HUGE_VALF);
   }
   if (s.materials.empty()) throw InputError("materials", "expected at least one material");
-  for (std::size_t i = 0; i < s.materials.size(); ++i) {
-    const Material& m = s.materials[i];
-    const std::string key = json_path::element("materials", i);
-    check_color(m.diffuse, key + ".diffuse", 0.0f, HUGE_VALF);
-    check_color(m.specular, key + ".specular", 0.0f, HUGE_VALF);
-    if (!(m.shininess >= 1.0 && m.shininess <= limits::kMaxShininess))
-      throw InputError(key + ".shininess", "expected [1, " + format_number(limits::kMaxShininess) + "], got " +
-                                               format_number(m.shininess));
-  }
+  for (std::size_t i = 0; i < s.materials.size(); ++i) check_material(s.materials[i], json_path::element("materials", i));
   if (s.objects.empty()) throw InputError("objects", "expected at least one object");
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
     const Object& o = s.objects[i];
