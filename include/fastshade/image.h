@@ -35,6 +35,29 @@ struct Image {
   ImageBytes rgb;  // row-major, top row first, 3 bytes a pixel
 };
 
+// Per-pixel outputs beside colour ("arbitrary output variables"; docs/PIPELINE.md, "Outputs
+// beyond colour"). Each is of the pixel's visible surface, the one whose colour the image shows.
+struct AovSet {
+  bool depth = false;        // distance along the camera's viewing axis, scene units
+  bool normal = false;       // the shading normal, interpolated and normalised, world space
+  bool triangle_id = false;  // the face's index in its object's mesh as loaded
+  bool object_id = false;    // the object's index in Scene::objects
+  bool any() const { return depth || normal || triangle_id || object_id; }
+  bool ids() const { return triangle_id || object_id; }
+  bool operator==(const AovSet&) const = default;
+};
+
+// Row-major, top row first, like Image. Only the arrays `present` names are filled; the others
+// are empty.
+struct AovImages {
+  int width = 0, height = 0;
+  AovSet present;
+  std::vector<float> depth;          // width*height; 0 where nothing is drawn (as pyrender)
+  std::vector<float> normal;         // width*height*3, unit length; 0 where nothing is drawn
+  std::vector<int32_t> triangle_id;  // width*height; -1 where nothing is drawn
+  std::vector<int32_t> object_id;    // width*height; -1 where nothing is drawn
+};
+
 struct ImageF {
   int width = 0, height = 0;
   std::vector<float> rgb;  // [0, 1] nominal, 3 floats a pixel
@@ -47,6 +70,15 @@ void check_output_path(const std::filesystem::path& path);
 // The extension picks the format (png, exr, tif, ...). Written to a temporary file beside the
 // target and renamed, so a failed or interrupted write leaves no partial output.
 void write_image(const Image& image, const std::filesystem::path& path);
+
+// Colour and AOVs. To an .exr path: one multi-channel EXR (R, G, B as write_image writes them,
+// then Z, N.X, N.Y, N.Z as FLOAT and triangle_id, object_id as UINT holding the int32's bits:
+// -1 reads as 4294967295), only the AOVs `aovs.present` names. To any other format: colour
+// to `path` and the AOVs to aov_path(path). Both files are written to temporaries first and
+// renamed only once both are whole.
+void write_image(const Image& image, const AovImages& aovs, const std::filesystem::path& path);
+// Where the AOVs of a non-EXR output go: "out/a.png" -> "out/a.aov.exr".
+std::filesystem::path aov_path(const std::filesystem::path& path);
 
 // Reads any OpenImageIO format; the first three channels (grey is replicated).
 ImageF read_image(const std::filesystem::path& path);

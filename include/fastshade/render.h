@@ -110,6 +110,10 @@ class Renderer {
   // The same into `into`, whose buffer is reused when it has the frame's size: what timed
   // loops call, so that frames after the first allocate and clear nothing.
   void render_frame(Image& into, StageTimes* times = nullptr, FrameProfile* profile = nullptr);
+  // The same with the AOVs `which` names into `aovs` (buffers reused as `into`'s are; the
+  // others emptied). The colour is byte for byte the one without AOVs; the AOVs are the same
+  // for any thread count and tile size. A frame without AOVs runs none of their work.
+  void render_frame(Image& into, const AovSet& which, AovImages& aovs, StageTimes* times = nullptr);
   // The counts of the last frame (times filled by the caller's timing policy).
   RenderStats last_stats() const;
 

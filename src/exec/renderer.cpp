@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "classify/classifier.h"
+#include "exec/aov_pass.h"
 #include "core/simd_target.h"
 #include "exec/exec_limits.h"
 #include "exec/frame_profile.h"
@@ -47,6 +48,18 @@ TileGrid make_grid(int width, int height, int tile_px) {
   return g;
 }
 
+// The arrays `which` names at the frame's size, the others emptied.
+void size_aovs(const AovSet& which, AovImages& out, int width, int height) {
+  const std::size_t n = std::size_t(width) * height;
+  out.width = width;
+  out.height = height;
+  out.present = which;
+  out.depth.resize(which.depth ? n : 0);
+  out.normal.resize(which.normal ? n * 3 : 0);
+  out.triangle_id.resize(which.triangle_id ? n : 0);
+  out.object_id.resize(which.object_id ? n : 0);
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -66,6 +79,7 @@ struct Renderer::Impl {
   SetupParams setup;
   TileExecutor executor;
   RenderStats stats;
+  AovFrame aov;  // aov.which: what the front end was last set up for
 
   Impl(const Scene& scene, const RenderOptions& o, const ResolvedOptions& resolved)
       : choices(resolved.choices),
@@ -79,7 +93,6 @@ struct Renderer::Impl {
     frame.grid = make_grid(scene.width, scene.height,
                            resolve_tile_px(o.tile_px, scene.width, scene.height, arena.threads()));
     frame.shade = shade_constants(scene, xf, c);
-    needs = method->needs(frame.shade);
     draw = method->select(frame.simd, frame.shade, c);
     // Without lights `auto` has nothing to classify (every colour is the ambient one).
     classified = method->classifies && !frame.shade.lights.empty();
@@ -98,7 +111,9 @@ struct Renderer::Impl {
       closures = analyze_closures(geometry);
       setup.occlusion = &occlusion;
     }
-    setup.with_attrs = needs.normal || needs.color || needs.position;
+    set_needs(AovSet{});
+    aov.view_to_world = glm::transpose(glm::dmat3(glm::dmat4(xf.view)));
+    for (const ObjectRange& object : geometry.objects) aov.object_first_triangle.push_back(object.first_triangle);
     setup.sierpinski = c.sierpinski;
     setup.segment_steps = method->segment_steps(c);
     const std::size_t chunks =
@@ -112,12 +127,26 @@ struct Renderer::Impl {
     stats.isa = simd_target_name(frame.simd);
   }
 
+  // What the front end computes: the method's attributes, the normals a normal AOV reads, the
+  // records' source triangles where ids are written. None of it changes a colour.
+  void set_needs(const AovSet& which) {
+    needs = method->needs(frame.shade);
+    needs.normal = needs.normal || which.normal;
+    setup.with_attrs = needs.normal || needs.color || needs.position;
+    setup.with_sources = which.ids();
+    aov.which = which;
+  }
+
   // Every pixel is written (empty tiles get the background), so a buffer of the right size
-  // is reused as it is: a fresh one cost a 4K frame 25 MB of zero-fill and page faults.
-  void render(Image& image, StageTimes* times, FrameProfile* profile) {
+  // is reused as it is: a fresh one cost a 4K frame 25 MB of zero-fill and page faults. The
+  // same holds for the AOV arrays.
+  void render(Image& image, StageTimes* times, FrameProfile* profile, const AovSet& which, AovImages* aovs) {
     image.width = frame.grid.width;
     image.height = frame.grid.height;
     image.rgb.resize(std::size_t(image.width) * image.height * 3);
+    if (which != aov.which) set_needs(which);
+    aov.out = aovs;
+    if (aovs) size_aovs(which, *aovs, frame.grid.width, frame.grid.height);
     StageTimes t;
     BackEndCounts back_end;
     int objects_culled = 0;
@@ -164,7 +193,7 @@ struct Renderer::Impl {
 
       const auto t2 = Clock::now();
       const BackEndCounts counts =
-          executor.run(frame, draw, image, profile ? profile->tile_ns.data() : nullptr);
+          executor.run(frame, draw, image, profile ? profile->tile_ns.data() : nullptr, aovs ? &aov : nullptr);
       t.raster_shade = ms_since(t2);
       t.total = ms_since(t0);
       if (profile) profile->stages = t;
@@ -184,11 +213,15 @@ Renderer::~Renderer() = default;
 
 Image Renderer::render_frame(StageTimes* times, FrameProfile* profile) {
   Image image;
-  impl_->render(image, times, profile);
+  impl_->render(image, times, profile, AovSet{}, nullptr);
   return image;
 }
 void Renderer::render_frame(Image& into, StageTimes* times, FrameProfile* profile) {
-  impl_->render(into, times, profile);
+  impl_->render(into, times, profile, AovSet{}, nullptr);
+}
+void Renderer::render_frame(Image& into, const AovSet& which, AovImages& aovs, StageTimes* times) {
+  impl_->render(into, times, nullptr, which, which.any() ? &aovs : nullptr);
+  if (!which.any()) size_aovs(which, aovs, into.width, into.height);
 }
 RenderStats Renderer::last_stats() const { return impl_->stats; }
 

@@ -9,6 +9,7 @@
 #include <tbb/partitioner.h>
 
 #include "core/force_inline.h"
+#include "exec/aov_pass.h"
 #include "exec/exec_limits.h"
 #include "exec/frame_profile.h"
 #include "exec/tile_io.h"
@@ -23,6 +24,7 @@ namespace {
 struct TileBuffers {  // one worker's scratch, sized for the largest tile, reused across tiles
   std::vector<uint32_t> color;
   std::vector<float> depth;
+  std::vector<uint32_t> aov_entries;  // sized on the first frame with AOVs
   PixelQueue queue;
   // This worker's share of the frame's counts: shared atomics were locked adds, six a tile.
   BackEndCounts counts;
@@ -103,8 +105,8 @@ struct TileExecutor::Scratch {
 TileExecutor::TileExecutor() : scratch_(std::make_unique<Scratch>()) {}
 TileExecutor::~TileExecutor() = default;
 
-BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image& image,
-                                uint64_t* tile_ns) {
+BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image& image, uint64_t* tile_ns,
+                                const AovFrame* aov) {
   const TileGrid& grid = frame.grid;
   const uint32_t background = background_rgba(frame.shade);
   const std::vector<uint8_t> background_rgb = background_row(background);
@@ -121,6 +123,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
     const uint32_t begin = frame.tile_begin[tile], end = frame.tile_begin[tile + 1];
     if (begin == end) {  // an empty tile costs only its background
       fill_rect(frame.simd, image, rect, background_rgb);
+      if (aov) write_empty_aovs(*aov, rect);
       return;
     }
     TileBuffers& buffers = scratch_->per_thread.local();
@@ -150,6 +153,10 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
       tile_draw(frame, frame.bin_entries[i], target);
     }
     light_pending(buffers.queue, target);
+    if (aov) {
+      buffers.aov_entries.resize(buffers.color.size());
+      write_tile_aovs(frame, *aov, begin, end, rect, buffers.depth.data(), stride, buffers.aov_entries.data());
+    }
     rgba_rows_to_rgb(frame.simd, buffers.color.data(), stride,
                      image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                      image.width * 3, w, h);

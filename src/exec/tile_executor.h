@@ -10,6 +10,8 @@
 
 namespace fastshade {
 
+struct AovFrame;  // exec/aov_pass.h
+
 struct BackEndCounts {
   long long tiles_nonempty = 0;
   long long covered_pixels = 0;
@@ -28,9 +30,10 @@ class TileExecutor {
   TileExecutor();
   ~TileExecutor();
   // Runs inside the caller's task arena. `image` must already have the frame's size. A non-null
-  // `tile_ns` (one slot per tile) receives each tile's time (exec/frame_profile.h).
-  BackEndCounts run(const Frame& frame, const TileDraw& draw, Image& image,
-                    uint64_t* tile_ns = nullptr);
+  // `tile_ns` (one slot per tile) receives each tile's time (exec/frame_profile.h). A non-null
+  // `aov` also writes the AOVs it names, each tile's after its colour.
+  BackEndCounts run(const Frame& frame, const TileDraw& draw, Image& image, uint64_t* tile_ns = nullptr,
+                    const AovFrame* aov = nullptr);
 
  private:
   struct Scratch;

@@ -75,6 +75,10 @@ static_assert(kMaxImageSide <= 32767, "pixel bounding boxes are int16");
 // attributes that clipping made.
 struct Chunk {
   std::vector<SetupTriangle> triangles;
+  // Per record, its input triangle (index in the scene's flattened triangles), only in frames
+  // that write triangle or object ids (include/fastshade/image.h AovSet): the records of a
+  // clipped or split triangle share it.
+  std::vector<uint32_t> sources;
   AttrArrays clipped;  // attributes of vertices that clipping made
   uint32_t clipped_count = 0;
   std::vector<uint32_t> tile_counts;  // per tile: how many of this chunk's triangles it holds

@@ -20,7 +20,9 @@ class ChunkBuilder {
       : p_(p), attrs_(attrs), chunk_(chunk), occlusion_(p.occlusion, first) {}
 
   // The input triangle the next emits come from (its pieces after clipping share its path).
-  void begin_source(const uint32_t* idx, uint16_t material, ShadePath planned, uint64_t planned_lights) {
+  void begin_source(uint32_t triangle, const uint32_t* idx, uint16_t material, ShadePath planned,
+                    uint64_t planned_lights) {
+    source_triangle_ = triangle;
     source_ = idx;
     material_ = material;
     planned_ = planned;
@@ -113,7 +115,7 @@ class ChunkBuilder {
       const int i = kept_column[k];
       const auto& idx = g.triangles[kept_source[k]];
       const uint16_t material = g.triangle_material[kept_source[k]];
-      begin_source(idx.data(), material, planned[k], planned_lights[k]);
+      begin_source(kept_source[k], idx.data(), material, planned[k], planned_lights[k]);
       const bool back_facing = (fates.back[i / 64] >> (i % 64)) & 1;
       append(screen[idx[0]], screen[idx[1]], screen[idx[2]], idx[0], idx[1], idx[2], material, back_facing,
              {fates.x0[i], fates.y0[i], fates.x1[i], fates.y1[i]});
@@ -143,6 +145,7 @@ class ChunkBuilder {
     // Sierpinski parts are Gouraud's: a split frame draws no segments.
     if (!p_.sierpinski && draws_segments(t, p_.segment_steps)) chunk_.segment_pending.push_back(static_cast<uint32_t>(chunk_.triangles.size()));
     chunk_.triangles.push_back(t);
+    if (p_.with_sources) chunk_.sources.push_back(source_triangle_);
     if (p_.sierpinski && std::max(box.x1 - box.x0, box.y1 - box.y0) + 1 >= limits::kSierpinskiMinPx)
       split_sierpinski();
   }
@@ -177,6 +180,7 @@ class ChunkBuilder {
   void split_sierpinski() {
     const SetupTriangle parent = chunk_.triangles.back();
     chunk_.triangles.pop_back();
+    if (p_.with_sources) chunk_.sources.pop_back();
     const int64_t unit = kEdgeUnitsPerPixel, half = unit / 2;
     for (int part = 1; part <= 4; ++part) {
       int64_t x[3], y[3];
@@ -194,6 +198,7 @@ class ChunkBuilder {
       t.px_min[0] = static_cast<int16_t>(px0), t.px_min[1] = static_cast<int16_t>(py0);
       t.px_max[0] = static_cast<int16_t>(px1), t.px_max[1] = static_cast<int16_t>(py1);
       chunk_.triangles.push_back(t);
+      if (p_.with_sources) chunk_.sources.push_back(source_triangle_);
     }
   }
 
@@ -231,6 +236,7 @@ class ChunkBuilder {
   const AttrArrays& attrs_;
   Chunk& chunk_;
   OcclusionCursor occlusion_;  // unclipped triangles only: an object that needs clipping culls none
+  uint32_t source_triangle_ = 0;  // index in SceneGeometry::triangles
   const uint32_t* source_ = nullptr;
   uint16_t material_ = 0;
   ShadePath planned_ = ShadePath::Unclassified;
@@ -244,6 +250,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
                  const AttrArrays& attrs, uint32_t first, uint32_t last,
                  const SetupParams& params, Chunk& chunk) {
   chunk.triangles.clear();
+  chunk.sources.clear();
   chunk.clipped.clear();
   chunk.clipped_count = 0;
   chunk.dropped = chunk.culled = chunk.hidden = 0;
@@ -287,7 +294,7 @@ void setup_chunk(const SceneGeometry& g, const ProjectedVertices& pv,
       builder.emit_columns(g, screen, columns, source, run);
       run = 0;
       // A clipped triangle (rare) is classified by classify(), which the lanes equal exactly.
-      builder.begin_source(idx.data(), g.triangle_material[t], ShadePath::Unclassified, 0);
+      builder.begin_source(t, idx.data(), g.triangle_material[t], ShadePath::Unclassified, 0);
       builder.emit_clipped(pv, attrs, idx.data(), g.triangle_material[t]);
     }
     builder.emit_columns(g, screen, columns, source, run);

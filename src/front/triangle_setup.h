@@ -20,6 +20,7 @@ struct SetupParams {
   Cull cull = Cull::None;
   bool with_attrs = false;  // clipping interpolates attributes only if the method reads them
   bool sierpinski = false;  // split large triangles into their four Sierpinski parts
+  bool with_sources = false;  // Chunk::sources: the frame writes triangle or object ids
   // Classifying methods (`auto`): the shading path of every triangle, decided here, once,
   // from its input triangle's vertex normals (a clipped piece inherits its triangle's path:
   // its normals are a subset of the triangle's). Needs the mesh's n_view (and pos_view for
