@@ -71,12 +71,14 @@ void check_output_path(const std::filesystem::path& path);
 // target and renamed, so a failed or interrupted write leaves no partial output.
 void write_image(const Image& image, const std::filesystem::path& path);
 
-// Colour and AOVs. To an .exr path: one multi-channel EXR (R, G, B as write_image writes them,
-// then Z, N.X, N.Y, N.Z as FLOAT and triangle_id, object_id as UINT holding the int32's bits:
-// -1 reads as 4294967295), only the AOVs `aovs.present` names. To any other format: colour
+// Colour and AOVs. To an .exr path: one multi-channel EXR (R, G, B as FLOAT value/255, then Z,
+// N.X, N.Y, N.Z as FLOAT and triangle_id, object_id as UINT holding the int32's bits: -1 reads
+// as 4294967295), only the AOVs `aovs.present` names; without any, write_image(image, path). To any other format: colour
 // to `path` and the AOVs to aov_path(path). Both files are written to temporaries first and
 // renamed only once both are whole.
 void write_image(const Image& image, const AovImages& aovs, const std::filesystem::path& path);
+// check_output_path() for every file write_image(image, aovs, path) would write.
+void check_output_path(const std::filesystem::path& path, const AovSet& aovs);
 // Where the AOVs of a non-EXR output go: "out/a.png" -> "out/a.aov.exr".
 std::filesystem::path aov_path(const std::filesystem::path& path);
 

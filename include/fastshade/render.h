@@ -123,8 +123,9 @@ class Renderer {
 };
 
 // With frames > 1 (a benchmark): one warm-up frame, then `frames` timed ones; stats carry the
-// medians. With frames == 1: one frame, timed.
-Image render(const Scene& scene, const RenderOptions& options, int frames = 1,
-             RenderStats* stats = nullptr);
+// medians. With frames == 1: one frame, timed. `aovs` (non-null) receives the AOVs `which`
+// names (Renderer::render_frame); every timed frame computes them.
+Image render(const Scene& scene, const RenderOptions& options, int frames = 1, RenderStats* stats = nullptr,
+             const AovSet& which = {}, AovImages* aovs = nullptr);
 
 }  // namespace fastshade

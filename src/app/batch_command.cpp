@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "app/aov_list.h"
 #include "app/batch_inputs.h"
 #include "app/batch_progress.h"
 #include "app/batch_results.h"
@@ -60,12 +61,12 @@ ImageSize parse_size(const std::string& text) {
 
 // The settings that decide every image's pixels, besides the mesh and the view: the template
 // (with --size), the shading options, the format. Not threads or tiles (the image is the same).
-std::string settings_text(const SceneTemplate& scene, const BatchCommand& cmd) {
+std::string settings_text(const SceneTemplate& scene, const BatchCommand& cmd, const AovSet& aovs) {
   const RenderOptions& o = cmd.options;
   return scene.canonical() + "|method=" + o.method + "|brdf=" + o.brdf + "|normals=" + o.normals +
          "|gouraud=" + o.gouraud + "|max_error=" + std::to_string(o.max_error) +
          "|srgb=" + std::to_string(o.srgb) + "|views=" + std::to_string(cmd.views) +
-         "|format=" + cmd.format;
+         "|format=" + cmd.format + (aovs.any() ? "|aov=" + aov_list_text(aovs) : "");
 }
 
 // The mesh file's identity as far as a rerun can tell without reading it.
@@ -119,8 +120,9 @@ struct Plan {
 };
 
 Plan plan_images(const std::vector<BatchMesh>& meshes, const std::string& settings,
-                 const BatchCommand& cmd, const std::set<std::string>& completed) {
+                 const BatchCommand& cmd, const AovSet& aovs, const std::set<std::string>& completed) {
   Plan plan;
+  const bool separate_aovs = aovs.any() && cmd.format != "exr";  // STEM.aov.exr beside the image
   for (const BatchMesh& mesh : meshes) {
     MeshJob job{mesh, {}};
     const std::string stamp = mesh_stamp(mesh);
@@ -131,9 +133,12 @@ Plan plan_images(const std::vector<BatchMesh>& meshes, const std::string& settin
       image.output = output_name(mesh, view, cmd.views, cmd.format);
       image.fingerprint = stable_hash(settings + "|" + stamp + "|view=" + std::to_string(view));
       plan.outputs.insert(image.output);
+      if (separate_aovs) image.aov_output = aov_path(image.output).string();
+      if (separate_aovs) plan.outputs.insert(image.aov_output);
       std::error_code ec;
       if (completed.count(completed_key(image.output, image.fingerprint)) &&
-          fs::exists(fs::path(cmd.outdir) / image.output, ec)) {
+          fs::exists(fs::path(cmd.outdir) / image.output, ec) &&
+          (!separate_aovs || fs::exists(fs::path(cmd.outdir) / image.aov_output, ec))) {
         plan.skipped.emplace_back(&mesh, image);
       } else {
         job.images.push_back(image);
@@ -174,6 +179,7 @@ int run_batch(const BatchCommand& cmd) {
                                     std::to_string(cmd.views));
   if (cmd.format != "png" && cmd.format != "exr" && cmd.format != "tif")
     throw InputError("--format", "expected png, exr or tif, got '" + cmd.format + "'");
+  const AovSet aovs = cmd.aov.empty() ? AovSet{} : parse_aov_list(cmd.aov);
   const Shard shard = parse_shard(cmd.shard);
   SceneTemplate scene = cmd.scene.empty()
                             ? SceneTemplate(default_batch_template_json(), "<default batch template>")
@@ -188,7 +194,7 @@ int run_batch(const BatchCommand& cmd) {
 
   const fs::path results_path = outdir / "results.jsonl";
   const Plan plan =
-      plan_images(meshes, settings_text(scene, cmd), cmd, completed_images(results_path));
+      plan_images(meshes, settings_text(scene, cmd, aovs), cmd, aovs, completed_images(results_path));
   remove_stale_temp_files(outdir, plan.outputs);
 
   ResultsLog log(results_path);
@@ -201,7 +207,7 @@ int run_batch(const BatchCommand& cmd) {
   BatchOutcome outcome;
   {
     const StopSignals signals;
-    outcome = render_jobs(plan.jobs, BatchSetup{scene, cmd.options, outdir, cmd.views, log, progress});
+    outcome = render_jobs(plan.jobs, BatchSetup{scene, cmd.options, aovs, outdir, cmd.views, log, progress});
   }
   progress.finish();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

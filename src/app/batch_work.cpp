@@ -145,10 +145,12 @@ class Workers {
       const Clock::time_point t0 = Clock::now();
       // Safe on several workers at once: a renderer's ISA is its own (core/simd_target.h).
       Renderer renderer(scene, setup_.options);
-      const Image frame = renderer.render_frame();
+      Image frame;
+      AovImages aovs;
+      renderer.render_frame(frame, setup_.aovs, aovs);
       const RenderStats stats = renderer.last_stats();
       const Clock::time_point t1 = Clock::now();
-      write_image(frame, setup_.outdir / image.output);
+      write_image(frame, aovs, setup_.outdir / image.output);
       const double render_ms = ms_between(t0, t1), write_ms = ms_between(t1, Clock::now());
 
       const Mesh& mesh = *scene.objects.front().mesh;
@@ -203,9 +205,11 @@ class Workers {
 }  // namespace
 
 json batch_line(const BatchMesh& mesh, const BatchImage& image, int views, const char* status) {
-  return {{"mesh", mesh.key},         {"view", image.view},     {"views", views},
-          {"angle_deg", image.angle_deg}, {"output", image.output}, {"status", status},
-          {"fingerprint", image.fingerprint}};
+  json line = {{"mesh", mesh.key},         {"view", image.view},     {"views", views},
+               {"angle_deg", image.angle_deg}, {"output", image.output}, {"status", status},
+               {"fingerprint", image.fingerprint}};
+  if (!image.aov_output.empty()) line["aov_output"] = image.aov_output;
+  return line;
 }
 
 BatchOutcome render_jobs(const std::vector<MeshJob>& jobs, const BatchSetup& setup) {

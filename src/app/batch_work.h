@@ -22,6 +22,7 @@ struct BatchImage {
   int view = 0;
   double angle_deg = 0;     // the camera's turn about the vertical (orbit_camera)
   std::string output;       // file name in the output directory
+  std::string aov_output;   // its AOVs' file beside it (STEM.aov.exr), or "" (none, or in `output`)
   std::string fingerprint;  // what decided its pixels; resuming compares it
 };
 
@@ -34,6 +35,7 @@ struct MeshJob {
 struct BatchSetup {
   const SceneTemplate& scene;
   const RenderOptions& options;  // options.threads: the number of workers, 0 = all cores
+  AovSet aovs;                   // written with each image (write_image with AOVs)
   std::filesystem::path outdir;
   int views = 1;
   ResultsLog& log;

@@ -23,6 +23,7 @@ struct RenderCommand {
   std::string stats_path;
   int frames = 1;
   bool explain = false;  // print the classifier's plan and what was left out
+  std::string aov;       // --aov list (app/aov_list.h); empty: colour only
   // --max-error without --method: render with the fastest configuration measured within
   // options.max_error on this scene (app/calibration.h), whose candidates `parse_render_flags` reads.
   bool calibrate = false;
@@ -41,6 +42,7 @@ struct BatchCommand {
   int views = 1;
   std::string shard = "0/1";
   std::string format = "png";
+  std::string aov;         // --aov list (app/aov_list.h); empty: colour only
   RenderOptions options;   // threads and method are the batch's flags
 };
 int run_batch(const BatchCommand& cmd);

@@ -48,6 +48,10 @@ int main(int argc, char** argv) {
                 "0: classify every triangle)");
   r->add_option("--hidden-faces", render.options.hidden_faces,
                 "skip (default): cull back faces their own closed mesh provably hides; draw: draw every face");
+  r->add_option("--aov", render.aov,
+                "also write per-pixel outputs: a comma list of depth, normal, triangle_id, object_id, or "
+                "all; into OUT if it is .exr, else into OUT's stem + .aov.exr beside it (docs/PIPELINE.md)")
+      ->type_name("LIST");
   r->add_flag("--explain", render.explain, "print the shading plan: paths, and what was left out");
   r->add_option("--config", "render options from a JSON file (fastshade tune writes one); flags given "
                             "here override its keys")
@@ -142,6 +146,8 @@ int main(int argc, char** argv) {
   bt->add_option("--threads", batch.options.threads, "worker threads (0 = all)");
   bt->add_option("--method", batch.options.method, "shading method (see render --help)");
   bt->add_option("--format", batch.format, "image format: png, exr or tif");
+  bt->add_option("--aov", batch.aov, "per-pixel outputs as render --aov: beside each image, or in it (exr)")
+      ->type_name("LIST");
 
   try {
     app.parse(argc, argv);

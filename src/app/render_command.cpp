@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/aov_list.h"
 #include "app/calibration.h"
 #include "app/commands.h"
 #include "fastshade/error.h"
@@ -38,8 +39,9 @@ int run_render(const RenderCommand& cmd) {
   if (cmd.frames < 1 || cmd.frames > 100000)
     throw InputError("--frames", "expected 1 to 100000, got " + std::to_string(cmd.frames));
   validate(cmd.options);
+  const AovSet aovs = cmd.aov.empty() ? AovSet{} : parse_aov_list(cmd.aov);
   // Every output is checked before the (possibly long) render starts.
-  check_output_path(cmd.output);
+  check_output_path(cmd.output, aovs);
   if (!cmd.stats_path.empty()) {
     const std::filesystem::path dir = std::filesystem::path(cmd.stats_path).parent_path();
     if (!dir.empty() && !std::filesystem::is_directory(dir))
@@ -56,8 +58,9 @@ int run_render(const RenderCommand& cmd) {
     std::printf("%s\n", calibration_summary(*calibration).c_str());
   }
   RenderStats stats;
-  const Image image = render(scene, options, cmd.frames, &stats);
-  write_image(image, cmd.output);
+  AovImages aov_images;
+  const Image image = render(scene, options, cmd.frames, &stats, aovs, &aov_images);
+  write_image(image, aov_images, cmd.output);
   if (!cmd.stats_path.empty()) {
     nlohmann::json json = nlohmann::json::parse(stats.to_json());
     if (calibration) json["calibration"] = calibration_json(*calibration);

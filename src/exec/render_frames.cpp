@@ -26,16 +26,21 @@ double RenderStats::mtri_per_s() const {
   return median.total > 0 ? triangles_in / (median.total * 1e3) : 0.0;
 }
 
-Image render(const Scene& scene, const RenderOptions& options, int frames, RenderStats* stats) {
+Image render(const Scene& scene, const RenderOptions& options, int frames, RenderStats* stats, const AovSet& which,
+             AovImages* aovs) {
   Renderer renderer(scene, options);
   frames = std::max(frames, 1);
   std::vector<StageTimes> times(1);
-  Image image = renderer.render_frame(&times[0]);
+  Image image;
+  AovImages no_aovs;
+  AovImages& into = aovs ? *aovs : no_aovs;
+  const AovSet asked = aovs ? which : AovSet{};
+  renderer.render_frame(image, asked, into, &times[0]);
   // One frame is the frame asked for, timed; a benchmark's first frame is a warm-up
   // (first-touch allocation, caches) that no median includes.
   if (frames > 1) {
     times.resize(frames);
-    for (StageTimes& t : times) renderer.render_frame(image, &t);
+    for (StageTimes& t : times) renderer.render_frame(image, asked, into, &t);
   }
   if (stats) {
     *stats = renderer.last_stats();

@@ -62,9 +62,9 @@ void check_output_path(const fs::path& path) {
   }
 }
 
-void write_image(const Image& image, const fs::path& path) {
-  check_output_path(path);
-  const std::string where = path.string();
+namespace {
+
+void check_image(const Image& image, const std::string& where) {
   if (image.width <= 0 || image.height <= 0)
     throw InputError(where, "cannot write an empty image (" + std::to_string(image.width) + "x" +
                                 std::to_string(image.height) + ")");
@@ -72,28 +72,22 @@ void write_image(const Image& image, const fs::path& path) {
   if (image.rgb.size() != n)
     throw InputError(where, "image buffer holds " + std::to_string(image.rgb.size()) +
                                 " bytes, expected " + std::to_string(n));
+}
 
-  TempFile temp(path);
+// Pixels in `format` (interleaved; UNKNOWN: each channel in spec.channelformats) into the
+// temporary file, which the caller commits. Throws InputError naming `where`.
+void write_pixels(const TempFile& temp, const std::string& where, const OIIO::ImageSpec& spec, OIIO::TypeDesc format,
+                  const void* pixels) {
   const std::string temp_name = temp.path().string();
   auto out = OIIO::ImageOutput::create(temp_name);
   if (!out) {
     std::string err = io::take_global_error();
     throw InputError(where, "cannot create image writer: " + err);
   }
-
-  const bool exr = is_exr(path);
-  OIIO::ImageSpec spec(image.width, image.height, 3, exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
-  std::vector<float> as_float;
-  if (exr) {
-    as_float.resize(n);
-    for (size_t i = 0; i < n; ++i) as_float[i] = static_cast<float>(image.rgb[i]) / 255.0f;
-  }
-
   // ImageOutput::open creates the file, so from here on the temp file may exist on disk.
   bool ok = out->open(temp_name, spec);
   if (ok) {
-    ok = exr ? out->write_image(OIIO::TypeDesc::FLOAT, as_float.data())
-             : out->write_image(OIIO::TypeDesc::UINT8, image.rgb.data());
+    ok = out->write_image(format, pixels);
     ok = out->close() && ok;
   }
   if (!ok) {
@@ -101,9 +95,109 @@ void write_image(const Image& image, const fs::path& path) {
     out.reset();
     throw InputError(where, "cannot write image: " + (err.empty() ? std::string("unknown error") : err));
   }
-  out.reset();
+}
 
+void write_colour(const Image& image, const TempFile& temp, const std::string& where, bool exr) {
+  const size_t n = image.rgb.size();
+  OIIO::ImageSpec spec(image.width, image.height, 3, exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
+  if (!exr) return write_pixels(temp, where, spec, OIIO::TypeDesc::UINT8, image.rgb.data());
+  std::vector<float> as_float(n);
+  for (size_t i = 0; i < n; ++i) as_float[i] = static_cast<float>(image.rgb[i]) / 255.0f;
+  write_pixels(temp, where, spec, OIIO::TypeDesc::FLOAT, as_float.data());
+}
+
+// One EXR channel: its name, its type in the file, and where pixel i's value is.
+struct AovChannel {
+  std::string name;
+  OIIO::TypeDesc type;
+  const void* data;
+  int stride;  // values per pixel in `data`
+  int offset;
+};
+
+// Colour (if given) and the present AOVs as one EXR, each channel in its own type: FLOAT for
+// colour (value/255), depth and normal; UINT for ids, holding the int32 bits.
+void write_aov_exr(const Image* colour, const AovImages& aovs, const TempFile& temp, const std::string& where) {
+  std::vector<AovChannel> channels;
+  std::vector<float> rgb;
+  if (colour) {
+    rgb.resize(colour->rgb.size());
+    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<float>(colour->rgb[i]) / 255.0f;
+    for (int c = 0; c < 3; ++c) channels.push_back({std::string(1, "RGB"[c]), OIIO::TypeDesc::FLOAT, rgb.data(), 3, c});
+  }
+  if (aovs.present.depth) channels.push_back({"Z", OIIO::TypeDesc::FLOAT, aovs.depth.data(), 1, 0});
+  if (aovs.present.normal)
+    for (int c = 0; c < 3; ++c)
+      channels.push_back({std::string("N.") + "XYZ"[c], OIIO::TypeDesc::FLOAT, aovs.normal.data(), 3, c});
+  if (aovs.present.triangle_id) channels.push_back({"triangle_id", OIIO::TypeDesc::UINT32, aovs.triangle_id.data(), 1, 0});
+  if (aovs.present.object_id) channels.push_back({"object_id", OIIO::TypeDesc::UINT32, aovs.object_id.data(), 1, 0});
+  OIIO::ImageSpec spec(aovs.width, aovs.height, static_cast<int>(channels.size()), OIIO::TypeDesc::FLOAT);
+  spec.channelnames.clear();
+  for (const AovChannel& c : channels) {
+    spec.channelnames.push_back(c.name);
+    spec.channelformats.push_back(c.type);
+  }
+  // Every channel is 4 bytes: pixel i's channel k at (i * channels + k) * 4.
+  const size_t pixels = size_t(aovs.width) * size_t(aovs.height);
+  std::vector<uint32_t> native(pixels * channels.size());
+  for (size_t k = 0; k < channels.size(); ++k) {
+    const auto* src = static_cast<const uint32_t*>(channels[k].data);  // float or int32 bits
+    for (size_t i = 0; i < pixels; ++i)
+      native[i * channels.size() + k] = src[i * channels[k].stride + channels[k].offset];
+  }
+  write_pixels(temp, where, spec, OIIO::TypeDesc::UNKNOWN, native.data());
+}
+
+void check_aovs(const AovImages& aovs, const Image& image, const std::string& where) {
+  const size_t n = size_t(image.width) * size_t(image.height);
+  const AovSet& p = aovs.present;
+  if (aovs.width != image.width || aovs.height != image.height || aovs.depth.size() != (p.depth ? n : 0) ||
+      aovs.normal.size() != (p.normal ? 3 * n : 0) || aovs.triangle_id.size() != (p.triangle_id ? n : 0) ||
+      aovs.object_id.size() != (p.object_id ? n : 0))
+    throw InputError(where, "AOV buffers do not match the " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + " image");
+}
+
+}  // namespace
+
+void write_image(const Image& image, const fs::path& path) {
+  check_output_path(path);
+  const std::string where = path.string();
+  check_image(image, where);
+  TempFile temp(path);
+  write_colour(image, temp, where, is_exr(path));
   temp.commit();
+}
+
+fs::path aov_path(const fs::path& path) {
+  fs::path out = path;
+  return out.replace_filename(path.stem().string() + ".aov.exr");
+}
+
+void check_output_path(const fs::path& path, const AovSet& aovs) {
+  check_output_path(path);
+  if (aovs.any() && !is_exr(path)) check_output_path(aov_path(path));
+}
+
+void write_image(const Image& image, const AovImages& aovs, const fs::path& path) {
+  if (!aovs.present.any()) return write_image(image, path);
+  check_output_path(path);
+  const std::string where = path.string();
+  check_image(image, where);
+  check_aovs(aovs, image, where);
+  if (is_exr(path)) {
+    TempFile temp(path);
+    write_aov_exr(&image, aovs, temp, where);
+    temp.commit();
+    return;
+  }
+  const fs::path beside = aov_path(path);
+  check_output_path(beside);
+  TempFile colour(path), aov(beside);
+  write_colour(image, colour, where, false);
+  write_aov_exr(nullptr, aovs, aov, beside.string());
+  aov.commit();
+  colour.commit();
 }
 
 }  // namespace fastshade

@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <set>
 #include <string>
@@ -287,3 +288,105 @@ TEST_F(ImageIoTest, RgbaDropsAlpha) {
 }
 
 }  // namespace
+
+namespace {
+
+fastshade::AovImages test_aovs(const Image& img) {
+  fastshade::AovImages a;
+  a.width = img.width;
+  a.height = img.height;
+  a.present = {true, true, true, true};
+  const size_t n = size_t(img.width) * img.height;
+  for (size_t i = 0; i < n; ++i) {
+    const bool empty = i % 5 == 0;
+    a.depth.push_back(empty ? 0.0f : 1.0f + 1e-3f * float(i) + 1e-7f);
+    for (int c = 0; c < 3; ++c) a.normal.push_back(empty ? 0.0f : (c == 0 ? 0.6f : c == 1 ? -0.8f : 0.0f));
+    a.triangle_id.push_back(empty ? -1 : int32_t(i * 7919));
+    a.object_id.push_back(empty ? -1 : int32_t(i % 3));
+  }
+  return a;
+}
+
+// Channel `name` of an EXR as raw 32-bit words (float bits or uint), empty if absent.
+std::vector<uint32_t> exr_channel(const fs::path& path, const std::string& name) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  const int c = spec.channelindex(name);
+  if (c < 0) return {};
+  const OIIO::TypeDesc type = spec.channelformat(c);
+  std::vector<uint32_t> words(size_t(spec.width) * spec.height);
+  if (!in->read_image(0, 0, c, c + 1, type, words.data())) return {};
+  return words;
+}
+
+template <typename T>
+std::vector<uint32_t> words_of(const std::vector<T>& v, int stride = 1, int offset = 0) {
+  std::vector<uint32_t> out;
+  for (size_t i = offset; i < v.size(); i += stride) {
+    uint32_t w;
+    std::memcpy(&w, &v[i], 4);
+    out.push_back(w);
+  }
+  return out;
+}
+
+}  // namespace
+
+// One EXR with colour and every AOV, each value exact: Z and N.* as FLOAT, ids as UINT with the
+// int32 bits (-1 reads 0xFFFFFFFF).
+TEST_F(ImageIoTest, AovsInAnExrAreNamedChannelsExactly) {
+  const Image img = test_image();
+  const fastshade::AovImages aovs = test_aovs(img);
+  const fs::path p = dir_ / "out.exr";
+  fastshade::write_image(img, aovs, p);
+  EXPECT_EQ(listing(), std::set<std::string>{"out.exr"});
+  auto in = OIIO::ImageInput::open(p.string());
+  ASSERT_TRUE(in);
+  const auto& names = in->spec().channelnames;
+  EXPECT_EQ(std::set<std::string>(names.begin(), names.end()),
+            (std::set<std::string>{"R", "G", "B", "Z", "N.X", "N.Y", "N.Z", "triangle_id", "object_id"}));
+  EXPECT_EQ(in->spec().channelformat(in->spec().channelindex("triangle_id")), OIIO::TypeDesc::UINT32);
+  EXPECT_EQ(exr_channel(p, "Z"), words_of(aovs.depth));
+  EXPECT_EQ(exr_channel(p, "N.Y"), words_of(aovs.normal, 3, 1));
+  EXPECT_EQ(exr_channel(p, "triangle_id"), words_of(aovs.triangle_id));
+  EXPECT_EQ(exr_channel(p, "object_id"), words_of(aovs.object_id));
+  EXPECT_EQ(exr_channel(p, "object_id")[0], 0xFFFFFFFFu);
+  expect_exact_round_trip(img, fastshade::read_image(p));
+}
+
+// Another format: colour as asked, the AOVs (no colour) in STEM.aov.exr beside it.
+TEST_F(ImageIoTest, AovsOfAPngGoBesideItAndAskedOnesOnly) {
+  const Image img = test_image();
+  fastshade::AovImages aovs = test_aovs(img);
+  aovs.present = {.depth = true, .object_id = true};
+  aovs.normal.clear();
+  aovs.triangle_id.clear();
+  const fs::path p = dir_ / "out.png";
+  fastshade::write_image(img, aovs, p);
+  EXPECT_EQ(listing(), (std::set<std::string>{"out.png", "out.aov.exr"}));
+  EXPECT_EQ(fastshade::aov_path(p), dir_ / "out.aov.exr");
+  auto in = OIIO::ImageInput::open((dir_ / "out.aov.exr").string());
+  ASSERT_TRUE(in);
+  const auto& names = in->spec().channelnames;
+  EXPECT_EQ(std::set<std::string>(names.begin(), names.end()), (std::set<std::string>{"Z", "object_id"}));
+  EXPECT_EQ(exr_channel(dir_ / "out.aov.exr", "Z"), words_of(aovs.depth));
+  expect_exact_round_trip(img, fastshade::read_image(p));
+}
+
+// Buffers that do not match the image, or a colour write that fails once both files are
+// open: an error naming the output, and neither file.
+TEST_F(ImageIoTest, AovFailuresLeaveNeitherFile) {
+  Image img = test_image();
+  fastshade::AovImages aovs = test_aovs(img);
+  aovs.depth.pop_back();
+  EXPECT_THROW(fastshade::write_image(img, aovs, dir_ / "out.png"), InputError);
+  const Image wide = test_image(1000001, 1);
+  try {
+    fastshade::write_image(wide, test_aovs(wide), dir_ / "wide.png");
+    FAIL() << "libpng accepted a 1000001 px row";
+  } catch (const InputError& e) {
+    expect_message(e, dir_ / "wide.png");
+  }
+  EXPECT_TRUE(listing().empty());
+}
