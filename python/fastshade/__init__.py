@@ -5,8 +5,10 @@
     scene.add_object(fastshade.load_mesh("bunny.ply"), fastshade.Material(shininess=50))
     scene.add_light((0.3, 0.5, 1.0))
     scene.camera = fastshade.Camera.fit()
-    frame = fastshade.render(scene, method="auto", max_error=1.0)
+    frame = fastshade.render(scene, aovs=("color", "depth", "triangle_id"), method="auto")
     frame.color        # (480, 640, 3) uint8
+    frame.depth        # (480, 640) float32, distance along the viewing axis, 0 where empty
+    frame.triangle_id  # (480, 640) int32, the face in its object's mesh, -1 where empty
     frame.stats        # the keys of `fastshade render --stats`
 
 Every bad input raises fastshade.InputError (a ValueError) with the command line's one-line message.
@@ -20,7 +22,7 @@ import numpy as np
 
 from ._fastshade import Camera, InputError, Material, Mesh, Scene, _methods, _Renderer, load_mesh
 
-__all__ = ["Camera", "Frame", "InputError", "Material", "Mesh", "Renderer", "Scene", "load_mesh", "methods", "render"]
+__all__ = ["AOVS", "Camera", "Frame", "InputError", "Material", "Mesh", "Renderer", "Scene", "load_mesh", "methods", "render"]
 
 
 # Every render option with its default, in the order the module takes them (README.md's
@@ -32,12 +34,36 @@ _OPTIONS = {
 }
 
 
+# The outputs a render can return beside colour (docs/PYTHON.md, "Outputs").
+AOVS = ("color", "depth", "normal", "triangle_id", "object_id")
+
+
 @dataclass
 class Frame:
-    """One rendered frame: `color` (H, W, 3) uint8 and `stats` (the keys of `render --stats`)."""
+    """One rendered frame and the outputs asked for (None where not asked).
+
+    color: (H, W, 3) uint8, always. depth: (H, W) float32, the distance along the camera's
+    viewing axis in scene units, 0 where nothing is drawn. normal: (H, W, 3) float32, the
+    shading normal as interpolated and normalised, world space, 0 where nothing is drawn.
+    triangle_id: (H, W) int32, the face's index in its object's mesh, -1 where nothing is
+    drawn. object_id: (H, W) int32, the object's index in the scene (add_object's return), -1
+    where nothing is drawn. stats: the keys of `fastshade render --stats`.
+    """
 
     color: np.ndarray
     stats: dict = field(default_factory=dict)
+    depth: np.ndarray | None = None
+    normal: np.ndarray | None = None
+    triangle_id: np.ndarray | None = None
+    object_id: np.ndarray | None = None
+
+
+def _aov_flags(aovs) -> tuple[bool, bool, bool, bool]:
+    names = (aovs,) if isinstance(aovs, str) else tuple(aovs)
+    for name in names:
+        if name not in AOVS:
+            raise InputError(f"aovs: unknown output {name!r} (expected some of: {', '.join(AOVS)})")
+    return tuple(name in names for name in AOVS[1:])
 
 
 class Renderer:
@@ -68,14 +94,20 @@ class Renderer:
             values.append(value)
         self._renderer = _Renderer(scene, *values)
 
-    def render(self) -> Frame:
-        color, stats = self._renderer.render()
-        return Frame(color=color, stats=json.loads(stats))
+    def render(self, aovs=("color",)) -> Frame:
+        """One frame with the outputs `aovs` names (of fastshade.AOVS; colour always comes).
+
+        The colour is byte for byte the one rendered without AOVs; the AOVs are the same for
+        any thread count and tile size. Arrays are the renderer's buffers, not copies.
+        """
+        color, stats, depth, normal, triangle_id, object_id = self._renderer.render(*_aov_flags(aovs))
+        return Frame(color=color, stats=json.loads(stats), depth=depth, normal=normal,
+                     triangle_id=triangle_id, object_id=object_id)
 
 
-def render(scene: Scene, **options) -> Frame:
-    """Renderer(scene, **options).render() in one call."""
-    return Renderer(scene, **options).render()
+def render(scene: Scene, aovs=("color",), **options) -> Frame:
+    """Renderer(scene, **options).render(aovs) in one call."""
+    return Renderer(scene, **options).render(aovs)
 
 
 def methods() -> dict[str, str]:

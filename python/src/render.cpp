@@ -26,21 +26,36 @@ struct PyRenderer {
 
 using ColorArray = nb::ndarray<nb::numpy, uint8_t, nb::shape<-1, -1, 3>>;
 
-// One frame: colour (H, W, 3) uint8, owned by the array, and the stats as JSON text.
-std::pair<ColorArray, std::string> render_frame(PyRenderer& r) {
-  auto image = std::make_unique<Image>();
+// A frame's buffers, owned by one capsule that every array it returns holds: no copies.
+struct FrameBuffers {
+  Image color;
+  AovImages aovs;
+};
+
+template <typename T, typename... Shape>
+nb::object array_of(std::vector<T>& v, const nb::capsule& owner, Shape... shape) {
+  if (v.empty()) return nb::none();
+  return nb::cast(nb::ndarray<nb::numpy, T>(v.data(), {std::size_t(shape)...}, owner));
+}
+
+// One frame: colour (H, W, 3) uint8, the stats as JSON text, and the AOVs asked for (None for
+// the others): depth (H, W) float32, normal (H, W, 3) float32, ids (H, W) int32.
+nb::tuple render_frame(PyRenderer& r, bool depth, bool normal, bool triangle_id, bool object_id) {
+  auto buffers = std::make_unique<FrameBuffers>();
   RenderStats stats;
   {
     nb::gil_scoped_release unlocked;
-    r.renderer->render_frame(*image);
+    r.renderer->render_frame(buffers->color, AovSet{depth, normal, triangle_id, object_id}, buffers->aovs);
     stats = r.renderer->last_stats();
     stats.frames = 1;
   }
-  const std::size_t height = image->height, width = image->width;
-  uint8_t* pixels = image->rgb.data();
-  Image* owned = image.release();
-  nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<Image*>(p); });
-  return {ColorArray(pixels, {height, width, 3}, owner), stats.to_json()};
+  FrameBuffers* b = buffers.release();
+  nb::capsule owner(b, [](void* p) noexcept { delete static_cast<FrameBuffers*>(p); });
+  const std::size_t height = b->color.height, width = b->color.width;
+  return nb::make_tuple(ColorArray(b->color.rgb.data(), {height, width, 3}, owner), stats.to_json(),
+                        array_of(b->aovs.depth, owner, height, width), array_of(b->aovs.normal, owner, height, width, 3),
+                        array_of(b->aovs.triangle_id, owner, height, width),
+                        array_of(b->aovs.object_id, owner, height, width));
 }
 
 }  // namespace
@@ -66,7 +81,7 @@ void bind_render(nb::module_& m) {
            nb::arg("isa"), nb::arg("srgb"), nb::arg("brdf"), nb::arg("normals"), nb::arg("gouraud"),
            nb::arg("hidden_faces"), nb::arg("spec_threshold"), nb::arg("spec_method"), nb::arg("classifier"),
            nb::arg("classify_min_px"))
-      .def("render", &render_frame);
+      .def("render", &render_frame, nb::arg("depth"), nb::arg("normal"), nb::arg("triangle_id"), nb::arg("object_id"));
   m.def("_methods", [] {
     std::vector<std::pair<std::string, std::string>> out;
     for (const MethodDescription& d : list_methods()) out.emplace_back(d.name, d.summary);

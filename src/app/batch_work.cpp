@@ -28,21 +28,6 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-json camera_json(const Camera& c) {
-  if (c.intrinsics) {  // as the scene format writes a calibrated camera, in OpenGL axes
-    json pose = json::array();
-    for (int row = 0; row < 4; ++row)
-      pose.push_back({c.camera_to_world[0][row], c.camera_to_world[1][row], c.camera_to_world[2][row],
-                      c.camera_to_world[3][row]});
-    const Intrinsics& k = *c.intrinsics;
-    return {{"intrinsics", {{"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}}},
-            {"pose", pose}, {"convention", "opengl"}, {"near", c.near}, {"far", c.far}};
-  }
-  const auto vec = [](const glm::vec3& v) { return json::array({v.x, v.y, v.z}); };
-  return {{"eye", vec(c.eye)}, {"target", vec(c.target)}, {"up", vec(c.up)},
-          {"fovy_deg", c.fovy_deg}, {"near", c.near}, {"far", c.far}};
-}
-
 // A mesh loaded and framed, shared by the views that still need it.
 struct LoadedMesh {
   const MeshJob* job;
@@ -119,8 +104,7 @@ class Workers {
     const Clock::time_point t0 = Clock::now();
     auto loaded = std::make_shared<LoadedMesh>();
     try {
-      auto mesh = std::make_shared<const Mesh>(load_mesh(job.mesh.path, setup_.scene.mesh_options()));
-      loaded->fit_scene = setup_.scene.scene_for(std::move(mesh));
+      loaded->fit_scene = load_batch_scene(setup_.context.scene, job.mesh);
     } catch (const std::exception& e) {  // InputError, or std::bad_alloc on a huge mesh
       const double load_ms = ms_between(t0, Clock::now());
       for (const BatchImage& image : job.images) failed(job.mesh, image, e.what(), load_ms);
@@ -138,31 +122,9 @@ class Workers {
     const MeshJob& job = *task.mesh->job;
     const BatchImage& image = *task.image;
     const double load_ms = task.mesh->load_ms;
-    json line = batch_line(job.mesh, image, setup_.views, "ok");
+    json line;
     try {
-      Scene scene = task.mesh->fit_scene;
-      scene.camera = orbit_camera(scene.camera, image.angle_deg);
-      const Clock::time_point t0 = Clock::now();
-      // Safe on several workers at once: a renderer's ISA is its own (core/simd_target.h).
-      Renderer renderer(scene, setup_.options);
-      Image frame;
-      AovImages aovs;
-      renderer.render_frame(frame, setup_.aovs, aovs);
-      const RenderStats stats = renderer.last_stats();
-      const Clock::time_point t1 = Clock::now();
-      write_image(frame, aovs, setup_.outdir / image.output);
-      const double render_ms = ms_between(t0, t1), write_ms = ms_between(t1, Clock::now());
-
-      const Mesh& mesh = *scene.objects.front().mesh;
-      line["vertices"] = mesh.positions.size();
-      line["triangles"] = mesh.triangles.size();
-      line["triangles_drawn"] = stats.triangles_drawn;
-      line["covered_pixels"] = stats.covered_pixels;
-      line["load_ms"] = load_ms;
-      line["render_ms"] = render_ms;
-      line["write_ms"] = write_ms;
-      line["time_ms"] = load_ms + render_ms + write_ms;
-      line["camera"] = camera_json(scene.camera);
+      line = render_batch_view(setup_.context, task.mesh->fit_scene, job.mesh, image, load_ms);
     } catch (const std::exception& e) {  // InputError from write_image, std::bad_alloc, ...
       failed(job.mesh, image, e.what(), load_ms);
       return;
@@ -179,10 +141,7 @@ class Workers {
 
   void failed(const BatchMesh& mesh, const BatchImage& image, const std::string& error,
               double load_ms) {
-    json line = batch_line(mesh, image, setup_.views, "failed");
-    line["error"] = error;
-    line["load_ms"] = load_ms;
-    setup_.log.append(line);
+    setup_.log.append(failed_line(mesh, image, setup_.context.views, error, load_ms));
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       ++outcome_.failed;
@@ -204,17 +163,9 @@ class Workers {
 
 }  // namespace
 
-json batch_line(const BatchMesh& mesh, const BatchImage& image, int views, const char* status) {
-  json line = {{"mesh", mesh.key},         {"view", image.view},     {"views", views},
-               {"angle_deg", image.angle_deg}, {"output", image.output}, {"status", status},
-               {"fingerprint", image.fingerprint}};
-  if (!image.aov_output.empty()) line["aov_output"] = image.aov_output;
-  return line;
-}
-
 BatchOutcome render_jobs(const std::vector<MeshJob>& jobs, const BatchSetup& setup) {
   const int threads =
-      setup.options.threads > 0 ? setup.options.threads : tbb::info::default_concurrency();
+      setup.context.options.threads > 0 ? setup.context.options.threads : tbb::info::default_concurrency();
   Workers workers(jobs, setup);
   // The workers are TBB worker threads and this thread only waits, outside their arena, so a
   // worker that has run out of work is free to join another worker's render (its tiles): N

@@ -9,42 +9,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/batch_inputs.h"
+#include "batch/batch_inputs.h"
 #include "app/batch_progress.h"
-#include "app/batch_results.h"
+#include "batch/batch_results.h"
 #include "fastshade/render.h"
-#include "io/scene_template.h"
+#include "batch/batch_view.h"
 
 namespace fastshade {
 
-// One image to render: a view of a mesh.
-struct BatchImage {
-  int view = 0;
-  double angle_deg = 0;     // the camera's turn about the vertical (orbit_camera)
-  std::string output;       // file name in the output directory
-  std::string aov_output;   // its AOVs' file beside it (STEM.aov.exr), or "" (none, or in `output`)
-  std::string fingerprint;  // what decided its pixels; resuming compares it
-};
-
-struct MeshJob {
-  BatchMesh mesh;
-  std::vector<BatchImage> images;  // its views still to render
-};
-
 // What the workers share: read-only, or (log, progress) thread-safe.
 struct BatchSetup {
-  const SceneTemplate& scene;
-  const RenderOptions& options;  // options.threads: the number of workers, 0 = all cores
-  AovSet aovs;                   // written with each image (write_image with AOVs)
-  std::filesystem::path outdir;
-  int views = 1;
+  BatchContext context;  // context.options.threads: the number of workers, 0 = all cores
   ResultsLog& log;
   BatchProgress& progress;
 };
-
-// The fields of an image's results line that every status has.
-nlohmann::json batch_line(const BatchMesh& mesh, const BatchImage& image, int views,
-                          const char* status);
 
 struct BatchOutcome {
   std::size_t ok = 0, failed = 0;

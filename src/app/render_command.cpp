@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/aov_list.h"
+#include "io/aov_list.h"
 #include "app/calibration.h"
 #include "app/commands.h"
 #include "fastshade/error.h"

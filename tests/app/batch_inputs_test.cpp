@@ -1,6 +1,6 @@
 // What fastshade batch finds in its inputs, how it splits them into shards, and the small pieces
 // of its run: signals, progress durations.
-#include "app/batch_inputs.h"
+#include "batch/batch_inputs.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -99,6 +99,32 @@ def fastshade_isas():
     return isas
 
 
+def test_aovs_are_numpy_arrays_of_the_visible_surface():
+    # Two quads facing the camera, the second nearer and smaller: ids say which one each pixel
+    # shows, depth is the distance along the axis (2.0 and 1.5 here), normals face +Z.
+    near = fastshade.Mesh(np.array([[-0.3, -0.3, 0.5], [0.3, -0.3, 0.5], [0.3, 0.3, 0.5], [-0.3, 0.3, 0.5]]),
+                          [[0, 1, 2], [0, 2, 3]])
+    scene = lit_scene(quad_mesh())
+    assert scene.add_object(near) == 1
+    scene.camera = fastshade.Camera.look_at((0, 0, 2), (0, 0, 0))
+    plain = fastshade.render(scene, threads=2)
+    frame = fastshade.render(scene, aovs=fastshade.AOVS, threads=2)
+    assert np.array_equal(frame.color, plain.color) and plain.depth is None
+    assert frame.depth.shape == (48, 64) and frame.depth.dtype == np.float32
+    assert frame.normal.shape == (48, 64, 3) and frame.normal.dtype == np.float32
+    assert frame.triangle_id.dtype == np.int32 and frame.object_id.dtype == np.int32
+    drawn = frame.object_id >= 0
+    assert drawn.sum() == frame.stats["covered_pixels"]
+    assert set(np.unique(frame.object_id)) == {-1, 0, 1} and set(np.unique(frame.triangle_id)) == {-1, 0, 1}
+    np.testing.assert_allclose(frame.depth[frame.object_id == 0], 2.0, rtol=1e-5)
+    np.testing.assert_allclose(frame.depth[frame.object_id == 1], 1.5, rtol=1e-5)
+    assert (frame.depth[~drawn] == 0).all() and (frame.normal[~drawn] == 0).all()
+    np.testing.assert_allclose(frame.normal[drawn], np.tile([0, 0, 1], (drawn.sum(), 1)), atol=1e-6)
+    assert frame.object_id[24, 32] == 1 and frame.object_id[24, 2] == 0
+    only_depth = fastshade.Renderer(scene, threads=1, tile=8).render(aovs="depth")
+    assert np.array_equal(only_depth.depth, frame.depth) and only_depth.triangle_id is None
+
+
 def test_calibrated_camera_puts_the_quad_where_k_says():
     vertices = np.array([[-0.02, -0.02, 0], [0.02, -0.02, 0], [0.02, 0.02, 0], [-0.02, 0.02, 0]]) + [0.1, -0.05, 2.0]
     mesh = fastshade.Mesh(vertices, [[0, 1, 2], [0, 2, 3]])
@@ -128,6 +154,7 @@ def test_calibrated_camera_puts_the_quad_where_k_says():
     lambda: fastshade.Renderer(lit_scene(quad_mesh()), method="nope"),
     lambda: fastshade.Renderer(lit_scene(quad_mesh()), no_such_option=1),
     lambda: fastshade.Renderer(lit_scene(quad_mesh()), threads="two"),
+    lambda: fastshade.Renderer(lit_scene(quad_mesh())).render(aovs=("color", "albedo")),
     lambda: fastshade.load_mesh("/no/such/mesh.obj"),
     lambda: fastshade.Scene.from_file("/no/such/scene.json"),
 ])

@@ -1,4 +1,4 @@
-#include "app/batch_results.h"
+#include "batch/batch_results.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -7,16 +7,9 @@
 #include <string_view>
 #include <vector>
 
-namespace fastshade {
+#include "fastshade/batch.h"
 
-struct BatchMesh {
-  // As found: a command-line argument, a directory argument joined with the file's path below
-  // it, or a list file's directory joined with its line; lexically normalised.
-  std::filesystem::path path;
-  std::string key;   // path.generic_string(): the sort key, hashed into `name`
-  std::string name;  // output base name: the file's stem, '-', 16 hex digits of the key's hash
-  std::uintmax_t file_bytes = 0;  // 0 if the file cannot be read (its load will say why)
-};
+namespace fastshade {
 
 // Expands the inputs: a directory gives every file below it (recursively, symbolic links to
 // files included, to directories not followed) whose extension is a mesh format's (obj, off,

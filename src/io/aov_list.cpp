@@ -1,4 +1,4 @@
-#include "app/aov_list.h"
+#include "io/aov_list.h"
 
 #include <sstream>
 

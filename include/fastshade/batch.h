@@ -1,0 +1,73 @@
+// Batches: every mesh of files, directories and list files rendered from a template scene's
+// fit camera in K views, resumable, each image recorded in OUTDIR/results.jsonl
+// (docs/BATCH.md). `fastshade batch` runs a plan on a pool of workers; fastshade.batch in
+// Python runs it mesh by mesh, locally or as Ray tasks. Both write the same files.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "fastshade/image.h"
+#include "fastshade/render.h"
+
+namespace fastshade {
+
+struct BatchSpec {
+  std::vector<std::string> inputs;  // mesh files, directories (searched recursively), list files
+  std::filesystem::path outdir;     // created if missing
+  std::string scene;                // template scene file; empty: the embedded default template
+  int width = 0, height = 0;        // image size; 0: the template's
+  int views = 1;                    // per mesh, turned 360/K degrees about the vertical
+  int shard_index = 0, shard_count = 1;  // render part I of N of the sorted meshes
+  std::string format = "png";       // png, exr or tif
+  AovSet aovs;                      // written with each image (write_image with AOVs)
+  RenderOptions options;            // options.threads: each render's threads
+};
+
+// A mesh as the inputs name it.
+struct BatchMesh {
+  // As found: an argument, a directory argument joined with the file's path below it, or a
+  // list file's directory joined with its line; lexically normalised.
+  std::filesystem::path path;
+  std::string key;   // path.generic_string(): the sort key, hashed into `name`
+  std::string name;  // output base name: the file's stem, '-', 16 hex digits of the key's hash
+  std::uintmax_t file_bytes = 0;  // 0 if the file cannot be read (its load will say why)
+};
+
+// One image to render: a view of a mesh.
+struct BatchImage {
+  int view = 0;
+  double angle_deg = 0;     // the camera's turn about the vertical (orbit_camera)
+  std::string output;       // file name in the output directory
+  std::string aov_output;   // its AOVs' file beside it (STEM.aov.exr), or "" (none, or in `output`)
+  std::string fingerprint;  // what decided its pixels; resuming compares it
+};
+
+struct MeshJob {
+  BatchMesh mesh;
+  std::vector<BatchImage> images;  // its views still to render
+};
+
+struct BatchPlan {
+  std::vector<MeshJob> jobs;  // the largest mesh file first: its load starts at once
+  // The results lines (JSON text) of the images an earlier run completed with the same
+  // settings, whose files exist: status "skipped".
+  std::vector<std::string> skipped;
+  std::size_t to_render = 0;
+};
+
+// Checks the spec (InputError naming the option: "--views: ...", "--format: ..."), reads the
+// template, finds the meshes of the shard, creates the output directory, and plans every view
+// the results of earlier runs do not cover. Removes temporary files a killed run left.
+BatchPlan plan_batch(const BatchSpec& spec);
+
+// Loads the job's mesh once and renders, writes and records each of its views in order: one
+// results line (JSON text) per image, status "ok" or "failed" (with "error"); a mesh that does
+// not load fails all its images. Throws only for a spec plan_batch() would refuse.
+std::vector<std::string> render_mesh_job(const BatchSpec& spec, const MeshJob& job);
+
+// Appends results lines to OUTDIR/results.jsonl, each whole (docs/BATCH.md, "Results").
+void append_batch_results(const std::filesystem::path& outdir, const std::vector<std::string>& lines);
+
+}  // namespace fastshade
