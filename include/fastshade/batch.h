@@ -67,6 +67,10 @@ BatchPlan plan_batch(const BatchSpec& spec);
 // not load fails all its images. Throws only for a spec plan_batch() would refuse.
 std::vector<std::string> render_mesh_job(const BatchSpec& spec, const MeshJob& job);
 
+// The "failed" results lines of every image of a job whose render never reported (a Ray task
+// that failed, a worker that died), each with `error`.
+std::vector<std::string> failed_job_lines(const BatchSpec& spec, const MeshJob& job, const std::string& error);
+
 // Appends results lines to OUTDIR/results.jsonl, each whole (docs/BATCH.md, "Results").
 void append_batch_results(const std::filesystem::path& outdir, const std::vector<std::string>& lines);
 

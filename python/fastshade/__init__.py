@@ -22,7 +22,7 @@ import numpy as np
 
 from ._fastshade import Camera, InputError, Material, Mesh, Scene, _methods, _Renderer, load_mesh
 
-__all__ = ["AOVS", "Camera", "Frame", "InputError", "Material", "Mesh", "Renderer", "Scene", "load_mesh", "methods", "render"]
+__all__ = ["AOVS", "Camera", "Frame", "InputError", "batch", "Material", "Mesh", "Renderer", "Scene", "load_mesh", "methods", "render"]
 
 
 # Every render option with its default, in the order the module takes them (README.md's
@@ -58,6 +58,25 @@ class Frame:
     object_id: np.ndarray | None = None
 
 
+def _checked_options(options: dict) -> dict:
+    """Every render option by name, defaults filled in, each of its option's type."""
+    unknown = sorted(set(options) - set(_OPTIONS))
+    if unknown:
+        raise InputError(f"{unknown[0]}: unknown option (expected one of: {', '.join(_OPTIONS)})")
+    checked = {}
+    for name, default in _OPTIONS.items():
+        value = options.get(name, default)
+        kind = type(default)
+        if kind is float and isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+            value = float(value)
+        if kind is int and isinstance(value, np.integer):
+            value = int(value)
+        if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+            raise InputError(f"{name}: expected {kind.__name__}, got {type(value).__name__} {value!r}")
+        checked[name] = value
+    return checked
+
+
 def _aov_flags(aovs) -> tuple[bool, bool, bool, bool]:
     names = (aovs,) if isinstance(aovs, str) else tuple(aovs)
     for name in names:
@@ -78,21 +97,7 @@ class Renderer:
     """
 
     def __init__(self, scene: Scene, **options):
-        unknown = sorted(set(options) - set(_OPTIONS))
-        if unknown:
-            raise InputError(f"{unknown[0]}: unknown option (expected one of: {', '.join(_OPTIONS)})")
-        values = []
-        for name, default in _OPTIONS.items():
-            value = options.get(name, default)
-            kind = type(default)
-            if kind is float and isinstance(value, (int, np.integer)) and not isinstance(value, bool):
-                value = float(value)
-            if kind is int and isinstance(value, np.integer):
-                value = int(value)
-            if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
-                raise InputError(f"{name}: expected {kind.__name__}, got {type(value).__name__} {value!r}")
-            values.append(value)
-        self._renderer = _Renderer(scene, *values)
+        self._renderer = _Renderer(scene, _checked_options(options))
 
     def render(self, aovs=("color",)) -> Frame:
         """One frame with the outputs `aovs` names (of fastshade.AOVS; colour always comes).
@@ -108,6 +113,9 @@ class Renderer:
 def render(scene: Scene, aovs=("color",), **options) -> Frame:
     """Renderer(scene, **options).render(aovs) in one call."""
     return Renderer(scene, **options).render(aovs)
+
+
+from ._batch import batch  # noqa: E402  (it uses the helpers above)
 
 
 def methods() -> dict[str, str]:

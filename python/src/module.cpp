@@ -7,4 +7,5 @@ NB_MODULE(_fastshade, m) {
   fastshade::python::bind_mesh(m);
   fastshade::python::bind_scene(m);
   fastshade::python::bind_render(m);
+  fastshade::python::bind_batch(m);
 }

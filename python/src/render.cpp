@@ -60,27 +60,36 @@ nb::tuple render_frame(PyRenderer& r, bool depth, bool normal, bool triangle_id,
 
 }  // namespace
 
+RenderOptions render_options(const nb::dict& d) {
+  RenderOptions o;
+  o.threads = nb::cast<int>(d["threads"]);
+  o.method = nb::cast<std::string>(d["method"]);
+  o.max_error = nb::cast<double>(d["max_error"]);
+  o.tile_px = nb::cast<int>(d["tile"]);
+  o.isa = nb::cast<std::string>(d["isa"]);
+  o.srgb = nb::cast<bool>(d["srgb"]);
+  o.brdf = nb::cast<std::string>(d["brdf"]);
+  o.normals = nb::cast<std::string>(d["normals"]);
+  o.gouraud = nb::cast<std::string>(d["gouraud"]);
+  o.hidden_faces = nb::cast<std::string>(d["hidden_faces"]);
+  o.spec_threshold = nb::cast<double>(d["spec_threshold"]);
+  o.spec_method = nb::cast<std::string>(d["spec_method"]);
+  o.classifier = nb::cast<std::string>(d["classifier"]);
+  o.classify_min_px = nb::cast<double>(d["classify_min_px"]);
+  return o;
+}
+
 void bind_render(nb::module_& m) {
   nb::class_<PyRenderer>(m, "_Renderer")
-      .def(nb::new_([](const PyScene& scene, int threads, const std::string& method, double max_error, int tile,
-                       const std::string& isa, bool srgb, const std::string& brdf, const std::string& normals,
-                       const std::string& gouraud, const std::string& hidden_faces, double spec_threshold,
-                       const std::string& spec_method, const std::string& classifier, double classify_min_px) {
-             RenderOptions o;
-             o.threads = threads, o.method = method, o.max_error = max_error, o.tile_px = tile, o.isa = isa;
-             o.srgb = srgb, o.brdf = brdf, o.normals = normals, o.gouraud = gouraud, o.hidden_faces = hidden_faces;
-             o.spec_threshold = spec_threshold, o.spec_method = spec_method, o.classifier = classifier;
-             o.classify_min_px = classify_min_px;
+      .def(nb::new_([](const PyScene& scene, const nb::dict& options) {
+             const RenderOptions o = render_options(options);
              auto r = std::make_unique<PyRenderer>();
              r->scene = resolved_scene(scene);
              nb::gil_scoped_release unlocked;
              r->renderer = std::make_unique<Renderer>(r->scene, o);
              return r.release();
            }),
-           nb::arg("scene"), nb::arg("threads"), nb::arg("method"), nb::arg("max_error"), nb::arg("tile"),
-           nb::arg("isa"), nb::arg("srgb"), nb::arg("brdf"), nb::arg("normals"), nb::arg("gouraud"),
-           nb::arg("hidden_faces"), nb::arg("spec_threshold"), nb::arg("spec_method"), nb::arg("classifier"),
-           nb::arg("classify_min_px"))
+           nb::arg("scene"), nb::arg("options"))
       .def("render", &render_frame, nb::arg("depth"), nb::arg("normal"), nb::arg("triangle_id"), nb::arg("object_id"));
   m.def("_methods", [] {
     std::vector<std::pair<std::string, std::string>> out;

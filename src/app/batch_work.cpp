@@ -14,6 +14,7 @@
 #include <tbb/task_arena.h>
 
 #include "app/stop_signals.h"
+#include "core/ms_between.h"
 #include "fastshade/image.h"
 #include "fastshade/mesh.h"
 
@@ -21,12 +22,8 @@ namespace fastshade {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 using nlohmann::json;
-
-double ms_between(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
 
 // A mesh loaded and framed, shared by the views that still need it.
 struct LoadedMesh {

@@ -12,6 +12,7 @@
 #include "batch/batch_inputs.h"
 #include "batch/batch_results.h"
 #include "batch/batch_view.h"
+#include "core/ms_between.h"
 #include "fastshade/error.h"
 #include "io/aov_list.h"
 #include "io/atomic_file.h"
@@ -154,16 +155,16 @@ std::vector<std::string> render_mesh_job(const BatchSpec& spec, const MeshJob& j
   const SceneTemplate scene = batch_template(spec);
   const BatchContext context{scene, spec.options, spec.aovs, spec.outdir, spec.views};
   std::vector<std::string> lines;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   Scene fit_scene;
   try {
     fit_scene = load_batch_scene(scene, job.mesh);
   } catch (const std::exception& e) {  // InputError, or std::bad_alloc on a huge mesh
-    const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double load_ms = ms_since(t0);
     for (const BatchImage& image : job.images) lines.push_back(failed_line(job.mesh, image, spec.views, e.what(), load_ms).dump());
     return lines;
   }
-  const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double load_ms = ms_since(t0);
   for (const BatchImage& image : job.images) {
     try {
       lines.push_back(render_batch_view(context, fit_scene, job.mesh, image, load_ms).dump());
@@ -171,6 +172,12 @@ std::vector<std::string> render_mesh_job(const BatchSpec& spec, const MeshJob& j
       lines.push_back(failed_line(job.mesh, image, spec.views, e.what(), load_ms).dump());
     }
   }
+  return lines;
+}
+
+std::vector<std::string> failed_job_lines(const BatchSpec& spec, const MeshJob& job, const std::string& error) {
+  std::vector<std::string> lines;
+  for (const BatchImage& image : job.images) lines.push_back(failed_line(job.mesh, image, spec.views, error, 0.0).dump());
   return lines;
 }
 

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <memory>
 
+#include "core/ms_between.h"
 #include "fastshade/image.h"
 #include "fastshade/mesh.h"
 #include "fastshade/render.h"
@@ -11,12 +12,8 @@ namespace fastshade {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 using nlohmann::json;
-
-double ms_between(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
 
 json camera_json(const Camera& c) {
   if (c.intrinsics) {  // as the scene format writes a calibrated camera, in OpenGL axes

@@ -8,6 +8,7 @@
 
 #include "classify/classifier.h"
 #include "exec/aov_pass.h"
+#include "core/ms_between.h"
 #include "core/simd_target.h"
 #include "exec/exec_limits.h"
 #include "exec/frame_profile.h"
@@ -31,11 +32,7 @@ namespace fastshade {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = SteadyClock;
 
 TileGrid make_grid(int width, int height, int tile_px) {
   TileGrid g;

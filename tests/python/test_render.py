@@ -120,7 +120,7 @@ def test_aovs_are_numpy_arrays_of_the_visible_surface():
     np.testing.assert_allclose(frame.depth[frame.object_id == 1], 1.5, rtol=1e-5)
     assert (frame.depth[~drawn] == 0).all() and (frame.normal[~drawn] == 0).all()
     np.testing.assert_allclose(frame.normal[drawn], np.tile([0, 0, 1], (drawn.sum(), 1)), atol=1e-6)
-    assert frame.object_id[24, 32] == 1 and frame.object_id[24, 2] == 0
+    assert frame.object_id[24, 32] == 1 and frame.object_id[24, 8] == 0 and frame.object_id[24, 0] == -1
     only_depth = fastshade.Renderer(scene, threads=1, tile=8).render(aovs="depth")
     assert np.array_equal(only_depth.depth, frame.depth) and only_depth.triangle_id is None
 
