@@ -19,7 +19,8 @@ def _first_line(error: BaseException) -> str:
     return f"{type(error).__name__}: {text[-1] if text else 'no message'}"
 
 
-def _ray_lines(spec: dict, jobs: list[dict], address: str | None, threads_per_task: int, record):
+def _ray_lines(spec: dict, jobs: list[dict], address: str | None, threads_per_task: int, record,
+               render_task=_render_mesh_task):
     try:
         import ray
     except ImportError:
@@ -27,7 +28,7 @@ def _ray_lines(spec: dict, jobs: list[dict], address: str | None, threads_per_ta
                          "(or pip install ray)") from None
     if not ray.is_initialized():
         ray.init(address=address) if address else ray.init()
-    task = ray.remote(num_cpus=threads_per_task, max_retries=0)(_render_mesh_task)
+    task = ray.remote(num_cpus=threads_per_task, max_retries=0)(render_task)
     spec = dict(spec, options=dict(spec["options"], threads=threads_per_task))
     pending = {task.remote(spec, job): job for job in jobs}
     while pending:

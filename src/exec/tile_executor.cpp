@@ -24,7 +24,7 @@ namespace {
 struct TileBuffers {  // one worker's scratch, sized for the largest tile, reused across tiles
   std::vector<uint32_t> color;
   std::vector<float> depth;
-  std::vector<uint32_t> aov_entries;  // sized on the first frame with AOVs
+  AovTileScratch aov;  // sized on the first frame with AOVs
   PixelQueue queue;
   // This worker's share of the frame's counts: shared atomics were locked adds, six a tile.
   BackEndCounts counts;
@@ -123,7 +123,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
     const uint32_t begin = frame.tile_begin[tile], end = frame.tile_begin[tile + 1];
     if (begin == end) {  // an empty tile costs only its background
       fill_rect(frame.simd, image, rect, background_rgb);
-      if (aov) write_empty_aovs(*aov, rect);
+      if (aov) write_empty_aovs(frame, *aov, rect);
       return;
     }
     TileBuffers& buffers = scratch_->per_thread.local();
@@ -153,10 +153,7 @@ BackEndCounts TileExecutor::run(const Frame& frame, const TileDraw& draw, Image&
       tile_draw(frame, frame.bin_entries[i], target);
     }
     light_pending(buffers.queue, target);
-    if (aov) {
-      buffers.aov_entries.resize(buffers.color.size());
-      write_tile_aovs(frame, *aov, begin, end, rect, buffers.depth.data(), stride, buffers.aov_entries.data());
-    }
+    if (aov) write_tile_aovs(frame, *aov, begin, end, rect, buffers.depth.data(), stride, buffers.aov);
     rgba_rows_to_rgb(frame.simd, buffers.color.data(), stride,
                      image.rgb.data() + (std::size_t(rect.y0) * image.width + rect.x0) * 3,
                      image.width * 3, w, h);
