@@ -76,8 +76,11 @@ void check_image(const Image& image, const std::string& where) {
 
 // Pixels in `format` (interleaved; UNKNOWN: each channel in spec.channelformats) into the
 // temporary file, which the caller commits. Throws InputError naming `where`.
-void write_pixels(const TempFile& temp, const std::string& where, const OIIO::ImageSpec& spec, OIIO::TypeDesc format,
+void write_pixels(const TempFile& temp, const std::string& where, OIIO::ImageSpec spec, OIIO::TypeDesc format,
                   const void* pixels) {
+  // OpenImageIO stamps EXR and TIFF files with the time of writing unless DateTime is set;
+  // empty, the same pixels give the same file bytes, run after run and engine after engine.
+  spec.attribute("DateTime", "");
   const std::string temp_name = temp.path().string();
   auto out = OIIO::ImageOutput::create(temp_name);
   if (!out) {

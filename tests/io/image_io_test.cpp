@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -389,4 +391,19 @@ TEST_F(ImageIoTest, AovFailuresLeaveNeitherFile) {
     expect_message(e, dir_ / "wide.png");
   }
   EXPECT_TRUE(listing().empty());
+}
+
+// No time of writing in any format (OpenImageIO adds one to EXR and TIFF unless told): the
+// same pixels make the same file, so batches on different engines and days compare by bytes.
+TEST_F(ImageIoTest, FilesCarryNoTimeOfWriting) {
+  const Image img = test_image();
+  for (const char* name : {"a.exr", "a.tif", "a.png"}) {
+    fastshade::write_image(img, test_aovs(img), dir_ / name);
+    for (const fs::path& p : {dir_ / name, fastshade::aov_path(dir_ / name)}) {
+      if (!fs::exists(p)) continue;
+      std::ifstream in(p, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      EXPECT_FALSE(std::regex_search(bytes, std::regex("[0-9]{4}:[0-9]{2}:[0-9]{2} [0-9]{2}:[0-9]{2}"))) << p;
+    }
+  }
 }

@@ -1,6 +1,7 @@
 """fastshade.batch(engine="ray"): the same files as the local engine, and no image lost when a task dies."""
 import json
 import os
+import sys
 
 import pytest
 
@@ -13,6 +14,8 @@ ray = pytest.importorskip("ray", reason="engine='ray' tests need Ray: pip instal
 
 @pytest.fixture(scope="module")
 def ray_cluster():
+    # Ray's workers cannot import this test module: its functions travel by value.
+    ray.cloudpickle.register_pickle_by_value(sys.modules[__name__])
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     yield
     ray.shutdown()
