@@ -2,7 +2,9 @@
 # One entry point for a fresh Debian 12 machine: installs what is missing, builds (Release),
 # then either renders the embedded default scene or runs the whole test suite.
 #   bash tools/dev.sh render   -> out/default.png and a one-line summary
-#   bash tools/dev.sh test     -> every test through ctest
+#   bash tools/dev.sh test     -> every test through ctest: GoogleTest, and pytest of the Python
+#                                 module in build/venv (made here: pip install of nanobind,
+#                                 numpy, pytest and ray from PyPI)
 #   bash tools/dev.sh sanitize -> every test, built with ASan + UBSan (no recovery) in build-asan/
 # Idempotent: nothing is installed or rebuilt that is already there.
 set -euo pipefail
@@ -14,6 +16,7 @@ case "$mode" in render|test|sanitize) ;; *) echo "usage: bash tools/dev.sh rende
 packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev libopenmesh-dev
           libopenimageio-dev libhwy-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
           libcli11-dev)
+[ "$mode" = test ] && packages+=(python3-dev python3-venv)
 # Optional, not installed here: python3-matplotlib draws the plots of `fastshade report` and
 # `fastshade bench scaling`; without it both write their tables and say so.
 bash tools/ensure_packages.sh "${packages[@]}"
@@ -36,6 +39,18 @@ if [ "$mode" = render ]; then
   cmake --build build -j "$jobs" --target fastshade >&2
   mkdir -p out
   exec build/fastshade render -o out/default.png
+fi
+# The Python module's venv: what building it (nanobind) and testing it (pytest, numpy, Ray) need.
+# Debian's python3 refuses system-wide pip. The marker says the install finished.
+venv=build/venv
+if [ ! -f "$venv/.installed" ]; then
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install -q --disable-pip-version-check "nanobind>=2.0" numpy pytest ray >&2
+  touch "$venv/.installed"
+fi
+python_build=$(sed -n 's/^FASTSHADE_PYTHON:BOOL=//p' build/CMakeCache.txt)
+if [ "$python_build" != ON ]; then
+  cmake -S . -B build -DFASTSHADE_PYTHON=ON -DPython_EXECUTABLE="$PWD/$venv/bin/python" >&2
 fi
 cmake --build build -j "$jobs" >&2
 # ctest lists skipped tests by name only: say once why the shared-model ones skipped.

@@ -1,5 +1,6 @@
 """fastshade.batch(engine="local"): the command line's batch from Python."""
 import json
+import os
 import pathlib
 import subprocess
 
@@ -30,7 +31,7 @@ def test_local_batch_records_every_image_and_resumes(meshes, tmp_path):
 
 
 def test_local_batch_writes_what_the_command_line_writes(meshes, tmp_path):
-    binary = REPO / "build" / "fastshade"
+    binary = pathlib.Path(os.environ.get("FASTSHADE_BINARY", REPO / "build" / "fastshade"))
     if not binary.exists():
         pytest.skip(f"needs the command line at {binary} (bash tools/dev.sh render builds it)")
     fastshade.batch(meshes, tmp_path / "py", size=(48, 32), views=3, aovs=("normal", "triangle_id"))

@@ -1,4 +1,5 @@
 """The Python module: numpy in and out, scenes in code and from files, cameras, errors."""
+import os
 import pathlib
 import re
 import threading
@@ -50,7 +51,7 @@ def read_ppm(path):
 
 
 def test_colour_matches_the_command_line(tmp_path):
-    binary = REPO / "build" / "fastshade"
+    binary = pathlib.Path(os.environ.get("FASTSHADE_BINARY", REPO / "build" / "fastshade"))
     if not binary.exists():
         pytest.skip(f"needs the command line at {binary} (bash tools/dev.sh render builds it)")
     import subprocess
