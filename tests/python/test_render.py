@@ -126,6 +126,19 @@ def test_aovs_are_numpy_arrays_of_the_visible_surface():
     assert np.array_equal(only_depth.depth, frame.depth) and only_depth.triangle_id is None
 
 
+def test_frames_own_their_buffers_and_released_ones_are_reused():
+    renderer = fastshade.Renderer(lit_scene(quad_mesh()), threads=1)
+    first = renderer.render(aovs=fastshade.AOVS)
+    kept = first.color.copy(), first.depth.copy()
+    second = renderer.render(aovs=fastshade.AOVS)
+    assert not np.shares_memory(first.color, second.color) and not np.shares_memory(first.depth, second.depth)
+    assert np.array_equal(first.color, kept[0]) and np.array_equal(first.depth, kept[1])
+    # Once Python lets a frame go, the next frame renders into its buffers (no fresh allocation).
+    address = second.color.ctypes.data
+    del second
+    assert renderer.render().color.ctypes.data == address
+
+
 def test_calibrated_camera_puts_the_quad_where_k_says():
     vertices = np.array([[-0.02, -0.02, 0], [0.02, -0.02, 0], [0.02, 0.02, 0], [-0.02, 0.02, 0]]) + [0.1, -0.05, 2.0]
     mesh = fastshade.Mesh(vertices, [[0, 1, 2], [0, 2, 3]])
