@@ -86,6 +86,15 @@ def batch(inputs, out_dir, size=(256, 256), views=1, scene=None, method="auto", 
     for key in ("views", "shard_index", "shard_count"):
         if isinstance(spec[key], bool) or not isinstance(spec[key], int):
             raise InputError(f"{key}: expected an int, got {spec[key]!r}")
+    # The library's checks name the command line's flags; these name the keywords.
+    if not 1 <= views <= 360:
+        raise InputError(f"views: expected 1 to 360, got {views}")
+    if size is not None and not all(1 <= side <= 16384 for side in (width, height)):
+        raise InputError(f"size: expected (width, height) with each in [1, 16384], got {tuple(size)}")
+    if format not in ("png", "exr", "tif"):
+        raise InputError(f"format: expected png, exr or tif, got {format!r}")
+    if not 0 <= shard[0] < shard[1]:
+        raise InputError(f"shard: expected (I, N) with 0 <= I < N, got {tuple(shard)}")
     jobs, skipped = _batch_plan(spec)
     results = []
 

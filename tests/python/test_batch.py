@@ -40,20 +40,21 @@ def test_local_batch_writes_what_the_command_line_writes(meshes, tmp_path):
     assert files(tmp_path / "py") == files(tmp_path / "cli") and len(files(tmp_path / "py")) == 12
 
 
-@pytest.mark.parametrize("call", [
-    lambda m, o: fastshade.batch(m, o, engine="spark"),
-    lambda m, o: fastshade.batch(m, o, views=0),
-    lambda m, o: fastshade.batch(m, o, size=(0, 10)),
-    lambda m, o: fastshade.batch(m, o, format="jpg"),
-    lambda m, o: fastshade.batch(m, o, aovs=("albedo",)),
-    lambda m, o: fastshade.batch(m, o, method="nope"),
-    lambda m, o: fastshade.batch(m, o, threads=2),
-    lambda m, o: fastshade.batch(m, o, threads_per_task=0),
-    lambda m, o: fastshade.batch(m, o, shard=(2, 2)),
-    lambda m, o: fastshade.batch(m / "nothing-here.txt", o),
+@pytest.mark.parametrize("call, names", [
+    (lambda m, o: fastshade.batch(m, o, engine="spark"), "engine"),
+    (lambda m, o: fastshade.batch(m, o, views=0), "views"),
+    (lambda m, o: fastshade.batch(m, o, size=(0, 10)), "size"),
+    (lambda m, o: fastshade.batch(m, o, format="jpg"), "format"),
+    (lambda m, o: fastshade.batch(m, o, aovs=("albedo",)), "aovs"),
+    (lambda m, o: fastshade.batch(m, o, method="nope"), "--method"),  # the renderer's own check, as Renderer's
+    (lambda m, o: fastshade.batch(m, o, threads=2), "threads"),
+    (lambda m, o: fastshade.batch(m, o, threads_per_task=0), "threads_per_task"),
+    (lambda m, o: fastshade.batch(m, o, shard=(2, 2)), "shard"),
+    (lambda m, o: fastshade.batch(m / "nothing-here.txt", o), "nothing-here.txt"),
 ])
-def test_bad_batch_arguments_are_input_errors_before_any_output(meshes, tmp_path, call):
+def test_bad_batch_arguments_are_input_errors_before_any_output(meshes, tmp_path, call, names):
     with pytest.raises(fastshade.InputError) as error:
         call(meshes, tmp_path / "out")
-    assert "\n" not in str(error.value)
+    where = str(error.value).split(": ")[0]  # the keyword (or file) the one-line message names
+    assert "\n" not in str(error.value) and (where == names or where.endswith("/" + names))
     assert not (tmp_path / "out").exists()
