@@ -3,6 +3,7 @@
 // workers; the rendering is the library's (include/fastshade/batch.h), the same as the
 // command line's.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nanobind/stl/string.h>
@@ -72,15 +73,27 @@ MeshJob job_of(const nb::dict& d) {
   return job;
 }
 
+// The library checks a spec as the command line's flags ("--views: expected 1 to 360, got 0"):
+// from Python the message names the keyword ("views: ..."), with the library's limits.
+[[noreturn]] void rethrow_with_keywords(const InputError& e) {
+  const std::string message = e.what();
+  for (const auto& [flag, keyword] : {std::pair{"--views: ", "views"}, std::pair{"--size: ", "size"},
+                                      std::pair{"--format: ", "format"}, std::pair{"--shard: ", "shard"}})
+    if (message.starts_with(flag)) throw InputError(keyword, message.substr(std::string(flag).size()));
+  throw e;
+}
+
 }  // namespace
 
 void bind_batch(nb::module_& m) {
   m.def("_batch_plan", [](const nb::dict& spec) {
     const BatchSpec s = spec_of(spec);
     BatchPlan plan;
-    {
+    try {
       nb::gil_scoped_release unlocked;
       plan = plan_batch(s);
+    } catch (const InputError& e) {
+      rethrow_with_keywords(e);
     }
     nb::list jobs;
     for (const MeshJob& job : plan.jobs) jobs.append(dict_of(job));

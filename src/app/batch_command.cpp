@@ -3,32 +3,25 @@
 #include <malloc.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
-#include <set>
 #include <string>
-#include <vector>
 
-#include "io/aov_list.h"
-#include "batch/batch_inputs.h"
+#include <nlohmann/json.hpp>
+
 #include "app/batch_progress.h"
-#include "batch/batch_results.h"
 #include "app/batch_work.h"
-#include "batch/batch_plan.h"
 #include "app/commands.h"
 #include "app/stop_signals.h"
+#include "batch/batch_inputs.h"
+#include "batch/batch_plan.h"
+#include "batch/batch_results.h"
 #include "fastshade/error.h"
-#include "fastshade/image.h"
-#include "io/atomic_file.h"
-#include "io/scene_file.h"
-#include "io/scene_template.h"
+#include "io/aov_list.h"
 
 namespace fastshade {
-namespace fs = std::filesystem;
 
 namespace {
 

@@ -1,7 +1,6 @@
 #include "exec/aov_pass.h"
 
 #include <algorithm>
-#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -14,7 +13,6 @@ namespace fastshade {
 
 namespace {
 
-constexpr uint32_t kNoEntry = kAovNoEntry;
 constexpr float kClearedDepth = 1.0f;  // exec/tile_io.h clear_tile
 constexpr int kSmallBoxPx = 64;         // shows_nothing(): boxes up to 8x8 are scanned
 
@@ -30,7 +28,7 @@ bool shows_nothing(const SetupTriangle& t, const PixelRect& box, const PixelRect
   for (int py = box.y0; py <= box.y1; ++py) {
     const std::size_t row = std::size_t(py - tile.y0) * stride - tile.x0;
     for (int px = box.x0; px <= box.x1; ++px)
-      if (entries[row + px] == kNoEntry && depth[row + px] >= nearest) return false;
+      if (entries[row + px] == kAovNoEntry && depth[row + px] >= nearest) return false;
   }
   return true;
 }
@@ -44,7 +42,7 @@ bool shows_nothing(const SetupTriangle& t, const PixelRect& box, const PixelRect
 void resolve_entries(const Frame& frame, uint32_t begin, uint32_t end, const PixelRect& rect, const float* depth,
                      int stride, uint32_t* entries) {
   const int w = rect.x1 - rect.x0 + 1;
-  for (int y = 0; y <= rect.y1 - rect.y0; ++y) std::fill_n(entries + y * stride, w, kNoEntry);
+  for (int y = 0; y <= rect.y1 - rect.y0; ++y) std::fill_n(entries + y * stride, w, kAovNoEntry);
   for (uint32_t i = begin; i < end; ++i) {
     const SetupTriangle& t = frame.triangle(frame.bin_entries[i]);
     TriangleInTile tri;
@@ -55,7 +53,7 @@ void resolve_entries(const Frame& frame, uint32_t begin, uint32_t end, const Pix
       const std::size_t row = std::size_t(py - rect.y0) * stride - rect.x0;
       for (int px = x0; px <= x1; ++px) {
         const float z = depth[row + px];
-        if (entries[row + px] == kNoEntry && z < kClearedDepth &&
+        if (entries[row + px] == kAovNoEntry && z < kClearedDepth &&
             plane_at(tri.depth, pixel_offsets(tri.bary, px, py)) == z)
           entries[row + px] = i - begin;
       }
@@ -64,7 +62,7 @@ void resolve_entries(const Frame& frame, uint32_t begin, uint32_t end, const Pix
 }
 
 void set_shown(const Frame& frame, const AovFrame& aov, uint32_t entry, AovTriangle& s) {
-  s.entry = entry;
+  s.set_up = true;
   const SetupTriangle& t = frame.triangle(entry);
   // The whole triangle's barycentrics (a Sierpinski part's parent): its vertices' attributes.
   Barycentrics b;
@@ -132,7 +130,7 @@ void write_tile_aovs(const Frame& frame, const AovFrame& aov, uint32_t begin, ui
     for (int px = rect.x0; px <= rect.x1; ++px) {
       const std::size_t at = row + px;
       const uint32_t local = scratch.entries[at];
-      if (local == kNoEntry) {
+      if (local == kAovNoEntry) {
         if (aov.which.depth) scratch.depth[at] = 0.0f;
         if (aov.which.normal) std::fill_n(&scratch.normal[at * 3], 3, 0.0f);
         if (aov.which.triangle_id) scratch.triangle_id[at] = -1;
@@ -140,7 +138,7 @@ void write_tile_aovs(const Frame& frame, const AovFrame& aov, uint32_t begin, ui
         continue;
       }
       AovTriangle& shown = scratch.shown[local];
-      if (shown.entry == kAovNoEntry) set_shown(frame, aov, frame.bin_entries[begin + local], shown);
+      if (!shown.set_up) set_shown(frame, aov, frame.bin_entries[begin + local], shown);
       const double dx = px - shown.ax, dy = py - shown.ay;
       // 1/w is linear in screen space; w is the view depth.
       if (aov.which.depth)

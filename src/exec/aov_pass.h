@@ -24,13 +24,14 @@ struct AovFrame {
   std::vector<uint32_t> object_first_triangle;
 };
 
+// AovTileScratch::entries of a pixel no triangle shows.
 inline constexpr uint32_t kAovNoEntry = 0xFFFFFFFFu;
 
 // What the pass derives once per shown triangle, reused across its pixels: 1/w and the
 // normal (rotated to world space, weighted by each vertex's 1/w: perspective-correct) as
 // screen-space planes, from the exact barycentrics of raster/planes.h, in double.
 struct AovTriangle {
-  uint32_t entry = kAovNoEntry;  // the bin entry; kAovNoEntry: not set up yet
+  bool set_up = false;
   int ax = 0, ay = 0;  // the planes' anchor pixel
   double inv_w[3];     // at the anchor, per pixel in x, per pixel in y
   glm::dvec3 n_world[3];

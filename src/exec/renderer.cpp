@@ -7,9 +7,9 @@
 #include <tbb/parallel_for.h>
 
 #include "classify/classifier.h"
-#include "exec/aov_pass.h"
 #include "core/ms_between.h"
 #include "core/simd_target.h"
+#include "exec/aov_pass.h"
 #include "exec/exec_limits.h"
 #include "exec/frame_profile.h"
 #include "exec/frame_stats.h"
@@ -144,6 +144,7 @@ struct Renderer::Impl {
     if (which != aov.which) set_needs(which);
     aov.out = aovs;
     if (aovs) size_aovs(which, *aovs, frame.grid.width, frame.grid.height);
+    const AovFrame* aov_pass = which.any() ? &aov : nullptr;
     StageTimes t;
     BackEndCounts back_end;
     int objects_culled = 0;
@@ -190,7 +191,7 @@ struct Renderer::Impl {
 
       const auto t2 = Clock::now();
       const BackEndCounts counts =
-          executor.run(frame, draw, image, profile ? profile->tile_ns.data() : nullptr, aovs ? &aov : nullptr);
+          executor.run(frame, draw, image, profile ? profile->tile_ns.data() : nullptr, aov_pass);
       t.raster_shade = ms_since(t2);
       t.total = ms_since(t0);
       if (profile) profile->stages = t;
@@ -217,8 +218,7 @@ void Renderer::render_frame(Image& into, StageTimes* times, FrameProfile* profil
   impl_->render(into, times, profile, AovSet{}, nullptr);
 }
 void Renderer::render_frame(Image& into, const AovSet& which, AovImages& aovs, StageTimes* times) {
-  impl_->render(into, times, nullptr, which, which.any() ? &aovs : nullptr);
-  if (!which.any()) size_aovs(which, aovs, into.width, into.height);
+  impl_->render(into, times, nullptr, which, &aovs);
 }
 RenderStats Renderer::last_stats() const { return impl_->stats; }
 

@@ -100,13 +100,17 @@ void write_pixels(const TempFile& temp, const std::string& where, OIIO::ImageSpe
   }
 }
 
+// EXR has no 8-bit channels: colour goes there as value/255.
+std::vector<float> unit_floats(const Image& image) {
+  std::vector<float> out(image.rgb.size());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<float>(image.rgb[i]) / 255.0f;
+  return out;
+}
+
 void write_colour(const Image& image, const TempFile& temp, const std::string& where, bool exr) {
-  const size_t n = image.rgb.size();
   OIIO::ImageSpec spec(image.width, image.height, 3, exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
   if (!exr) return write_pixels(temp, where, spec, OIIO::TypeDesc::UINT8, image.rgb.data());
-  std::vector<float> as_float(n);
-  for (size_t i = 0; i < n; ++i) as_float[i] = static_cast<float>(image.rgb[i]) / 255.0f;
-  write_pixels(temp, where, spec, OIIO::TypeDesc::FLOAT, as_float.data());
+  write_pixels(temp, where, spec, OIIO::TypeDesc::FLOAT, unit_floats(image).data());
 }
 
 // One EXR channel: its name, its type in the file, and where pixel i's value is.
@@ -124,8 +128,7 @@ void write_aov_exr(const Image* colour, const AovImages& aovs, const TempFile& t
   std::vector<AovChannel> channels;
   std::vector<float> rgb;
   if (colour) {
-    rgb.resize(colour->rgb.size());
-    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<float>(colour->rgb[i]) / 255.0f;
+    rgb = unit_floats(*colour);
     for (int c = 0; c < 3; ++c) channels.push_back({std::string(1, "RGB"[c]), OIIO::TypeDesc::FLOAT, rgb.data(), 3, c});
   }
   if (aovs.present.depth) channels.push_back({"Z", OIIO::TypeDesc::FLOAT, aovs.depth.data(), 1, 0});
@@ -184,7 +187,7 @@ void check_output_path(const fs::path& path, const AovSet& aovs) {
 
 void write_image(const Image& image, const AovImages& aovs, const fs::path& path) {
   if (!aovs.present.any()) return write_image(image, path);
-  check_output_path(path);
+  check_output_path(path, aovs.present);
   const std::string where = path.string();
   check_image(image, where);
   check_aovs(aovs, image, where);
@@ -195,7 +198,6 @@ void write_image(const Image& image, const AovImages& aovs, const fs::path& path
     return;
   }
   const fs::path beside = aov_path(path);
-  check_output_path(beside);
   TempFile colour(path), aov(beside);
   write_colour(image, colour, where, false);
   write_aov_exr(nullptr, aovs, aov, beside.string());
