@@ -51,7 +51,7 @@ void BM_Frame(benchmark::State& state, std::string mesh, std::string method) {
     return;
   }
   RenderOptions options;
-  options.method = method;
+  options.method = parse_option<ShadingMethod>(method, "method");
   options.threads = static_cast<int>(state.range(0));
   Renderer renderer(*scene, options);
   Image image = renderer.render_frame();  // warm-up

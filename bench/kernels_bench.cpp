@@ -66,7 +66,7 @@ template <typename Kernel>
 void run(benchmark::State& state, const std::string& isa, Kernel kernel, const std::string& brdf = "exact") {
   SimdTarget simd;
   try {
-    simd = simd_target(isa);
+    simd = simd_target(parse_option<Isa>(isa, "isa"));
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     return;

@@ -77,8 +77,8 @@ void run_scene(const std::filesystem::path& scene_path, const Args& args) {
   const std::string name = scene_path.stem().string();
   RenderOptions options;
   options.threads = args.threads;
-  options.hidden_faces = args.hidden_faces;
-  options.method = "reference";
+  options.hidden_faces = parse_option<HiddenFaces>(args.hidden_faces, "--hidden-faces");
+  options.method = ShadingMethod::Reference;
   const Image reference_image = render(scene, options);
   const ImageF reference = to_float(reference_image);
   if (!args.images.empty()) write_image(reference_image, args.images / (name + "_reference.png"));
@@ -86,7 +86,7 @@ void run_scene(const std::filesystem::path& scene_path, const Args& args) {
   for (const Object& o : scene.objects) triangles += static_cast<long long>(o.mesh->triangles.size());
 
   for (const std::string& method : args.methods) {
-    options.method = method;
+    options.method = parse_option<ShadingMethod>(method, "--method");
     Renderer fastshade(scene, options);
     peer::GlFrame llvmpipe(scene, method == "phong");
     auto draw_llvmpipe = [&] {

@@ -5,52 +5,10 @@
 #include <vector>
 
 #include "fastshade/image.h"
+#include "fastshade/options.h"
 #include "fastshade/scene.h"
 
 namespace fastshade {
-
-// The one options struct that reaches the renderer; printable for logs and stats.
-struct RenderOptions {
-  int threads = 0;         // 0 = all hardware threads
-  int tile_px = 64;        // power of two in [kMinTilePx, kMaxTilePx], or 0: sized from the
-                           // image and threads (exec/tile_size.h)
-  std::string method = "auto";
-  bool srgb = false;       // encode with the sRGB curve before quantising
-  std::string isa = "best";  // scalar | sse4 | avx2 | avx512 | best: this renderer's SIMD target
-  std::string brdf = "exact";  // specular approximation (docs/KERNELS.md)
-  double max_error = 1.0;  // auto, hybrid, --normals adaptive: error budget in 8-bit steps (LSB)
-  std::string normals = "normalize";  // phong: normalize | adaptive | equal-angle
-  std::string gouraud = "increments";  // gouraud: increments | sierpinski (split large triangles)
-  // auto: a triangle whose specular term stays below this (colour units) gets no specular work
-  double spec_threshold = 1.0 / 510.0;
-  std::string spec_method = "hybrid";  // auto: the kernel of triangles that may show a highlight
-  std::string classifier = "bound";    // auto: bound (error-checked) | paper (the literal rule)
-  // auto (bound): a block of triangles whose screen boxes average fewer pixels than this takes
-  // the specular path unclassified, where classifying would cost more than it saves; 0:
-  // classify every triangle. 80: the 1080p bunny (boxes of about 30 px) ran 1.25-1.28x gouraud
-  // with 40 and 1.13-1.19x with 80 against 1.21-1.42x classified, and meshes with larger
-  // triangles (cow, teapot, dragon_11k, spot) did not change beyond noise (docs/CLASSIFIER.md,
-  // "Dense blocks")
-  double classify_min_px = 80.0;
-  // skip: back faces that their own closed (or capped) mesh provably hides are culled at setup
-  // (front/self_occlusion.h); draw: every face is drawn, as a z-buffer without it would
-  std::string hidden_faces = "skip";
-  std::string to_string() const;
-  bool operator==(const RenderOptions&) const = default;
-};
-
-// Throws InputError ("--tile: ...") if an option is out of range or names no method.
-void validate(const RenderOptions& options);
-
-// The names `--method` accepts, with one line of description each, and whether the method
-// classifies triangles into shading paths (the options --spec-threshold, --spec-method,
-// --classifier and --classify-min-px apply to such methods only).
-struct MethodDescription {
-  std::string name, summary;
-  bool classifies = false;
-};
-std::vector<MethodDescription> list_methods();
-bool method_classifies(const std::string& name);  // false for an unknown name
 
 struct StageTimes {  // milliseconds
   double front_end = 0, binning = 0, raster_shade = 0, total = 0;

@@ -87,21 +87,31 @@ nb::tuple render_frame(PyRenderer& r, bool depth, bool normal, bool triangle_id,
 
 }  // namespace
 
+namespace {
+
+// A keyword's text as its typed option; a bad spelling names the keyword.
+template <OptionEnum E>
+E option_from(const nb::dict& d, const char* key) {
+  return parse_option<E>(nb::cast<std::string>(d[key]), key);
+}
+
+}  // namespace
+
 RenderOptions render_options(const nb::dict& d) {
   RenderOptions o;
   o.threads = nb::cast<int>(d["threads"]);
-  o.method = nb::cast<std::string>(d["method"]);
+  o.method = option_from<ShadingMethod>(d, "method");
   o.max_error = nb::cast<double>(d["max_error"]);
   o.tile_px = nb::cast<int>(d["tile"]);
-  o.isa = nb::cast<std::string>(d["isa"]);
+  o.isa = option_from<Isa>(d, "isa");
   o.srgb = nb::cast<bool>(d["srgb"]);
-  o.brdf = nb::cast<std::string>(d["brdf"]);
-  o.normals = nb::cast<std::string>(d["normals"]);
-  o.gouraud = nb::cast<std::string>(d["gouraud"]);
-  o.hidden_faces = nb::cast<std::string>(d["hidden_faces"]);
+  o.brdf = parse_brdf(nb::cast<std::string>(d["brdf"]), "brdf");
+  o.normals = option_from<PhongNormals>(d, "normals");
+  o.gouraud = option_from<GouraudMode>(d, "gouraud");
+  o.hidden_faces = option_from<HiddenFaces>(d, "hidden_faces");
   o.spec_threshold = nb::cast<double>(d["spec_threshold"]);
-  o.spec_method = nb::cast<std::string>(d["spec_method"]);
-  o.classifier = nb::cast<std::string>(d["classifier"]);
+  o.spec_method = option_from<SpecMethod>(d, "spec_method");
+  o.classifier = option_from<ClassifierRule>(d, "classifier");
   o.classify_min_px = nb::cast<double>(d["classify_min_px"]);
   return o;
 }

@@ -35,7 +35,7 @@ double ns_per_eval(SimdTarget simd, const BrdfParams& p) {
 
 }  // namespace
 
-int run_brdf_table(const std::string& isa) {
+int run_brdf_table(Isa isa) {
   const SimdTarget simd = simd_target(isa);
   std::printf("max |approximation - cos^n(gamma)| over gamma in [0, pi/2]; cost in ns per value (%s)\n\n",
               simd_target_name(simd).c_str());
@@ -44,9 +44,8 @@ int run_brdf_table(const std::string& isa) {
   std::printf(" ns/value |\n|---|");
   for (std::size_t i = 0; i < std::size(kTableShininess); ++i) std::printf("---:|");
   std::printf("---:|\n");
-  for (const std::string& name : brdf_names()) {
-    const BrdfChoice choice = parse_brdf(name, "brdf-table");
-    std::printf("| %s |", name.c_str());
+  for (const BrdfChoice& choice : brdf_choices()) {
+    std::printf("| %s |", option_name(choice).c_str());
     for (double n : kTableShininess) std::printf(" %.2g |", brdf_max_error(make_brdf(choice, n), n, kErrorGridPoints));
     std::printf(" %.3f |\n", ns_per_eval(simd, make_brdf(choice, 100)));
   }

@@ -15,7 +15,6 @@
 #include "app/tune_rule.h"
 #include "fastshade/error.h"
 #include "io/render_config.h"
-#include "shade/method.h"
 
 namespace fastshade {
 
@@ -38,7 +37,7 @@ void apply_run_keys(const RenderOptions& run, RenderOptions& o) {
 // Whether --max-error changes what `o` renders (render.h: auto, hybrid, --normals adaptive),
 // and so belongs in its label.
 bool budget_applies(const RenderOptions& o) {
-  return o.method == "hybrid" || find_method(o.method)->classifies || o.normals == "adaptive";
+  return o.method == ShadingMethod::Hybrid || method_classifies(o.method) || o.normals == PhongNormals::Adaptive;
 }
 
 std::string with_budget(const std::string& label, const RenderOptions& o) {
@@ -60,7 +59,7 @@ std::vector<Candidate> calibration_candidates(const RenderOptions& run, const Re
                                               std::size_t& baseline) {
   std::vector<Candidate> out;
   for (ReportConfig config : configs_to_measure({})) {  // reference first
-    const Method* method = find_method(config.method);
+    const std::optional<MethodDescription> method = find_method(config.method);
     if (method && method->classifies) continue;  // auto: tune's grid, below
     // The line's own budget goes: every candidate runs at the user's.
     for (auto f = config.flags.begin(); f != config.flags.end();)

@@ -49,7 +49,7 @@ int run_batch(const BatchCommand& cmd);
 
 int run_compare(const std::string& a, const std::string& b, bool json);
 int run_info(const std::string& mesh, bool json);
-int run_brdf_table(const std::string& isa);
+int run_brdf_table(Isa isa);
 
 // The options `render` runs with once `render_cli` has parsed: the flags given on the command
 // line (bound to `from_flags`) over its --config file's options over the defaults. A --method
@@ -72,7 +72,7 @@ struct ReportCommand {
   std::string models;                // shared meshes' directory for the default set
   std::vector<std::string> configs;  // "METHOD [FLAGS]"; empty: the whole table
   int threads = 0, frames = 5, heat_maps = 3;
-  std::string isa = "best";
+  Isa isa = Isa::Best;
   bool list_configs = false, no_plots = false;
   RenderFlagsParser parse_render_flags;
 };
@@ -91,7 +91,7 @@ struct TuneCommand {
   std::vector<std::string> classifiers = {"bound"};
   std::vector<double> classify_min_pxs = {RenderOptions{}.classify_min_px};
   int threads = 0, frames = 20;
-  std::string isa = "best";
+  Isa isa = Isa::Best;
 };
 // Prints the table; exit 0 with the config written, 1 if no candidate is within the budget.
 int run_tune(const TuneCommand& cmd);
@@ -102,7 +102,7 @@ struct ScalingCommand {
   int max_threads = 0;                 // 0: the hardware's threads and one more (oversubscribed)
   std::string tiles = "16,32,64,128";  // tile sizes, comma-separated
   int frames = 10;                     // timed frames per point, after one warm-up
-  std::string method = "phong";
+  ShadingMethod method = ShadingMethod::Phong;
   std::string out_dir = ".";           // scaling.csv, scaling.json, scaling.png
   bool no_plot = false;                // skip scaling.png
 };

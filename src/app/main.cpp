@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/option_flags.h"
 #include "fastshade/error.h"
 
 int main(int argc, char** argv) {
@@ -22,31 +23,31 @@ int main(int argc, char** argv) {
   r->add_option("--threads", render.options.threads, "worker threads (0 = all)");
   r->add_option("--tile", render.options.tile_px,
                 "tile size in pixels, a power of two 8..256 (default 64), or 0: the largest of 128, 64, 32, 16 that gives each thread 32 tiles");
-  r->add_option("--method", render.options.method, methods_help);
+  add_option_flag(r, "--method", render.options.method, methods_help);
   r->add_option("--frames", render.frames, "timed frames after one warm-up (medians reported)");
   r->add_option("--stats", render.stats_path, "write statistics as JSON");
-  r->add_option("--isa", render.options.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+  add_option_flag(r, "--isa", render.options.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
   r->add_flag("--srgb", render.options.srgb, "encode with the sRGB curve (default: linear)");
   r->add_option("--max-error", render.options.max_error,
                 "error budget in 8-bit steps, 0 to 255 (default 1). Without --method (and --config): "
                 "renders with the fastest configuration whose error against reference on this scene "
                 "stays within it, found by a calibration pass that says what it picked (docs/TUNING.md); "
                 "with --method: the budget of auto, hybrid and --normals adaptive");
-  r->add_option("--gouraud", render.options.gouraud,
+  add_option_flag(r, "--gouraud", render.options.gouraud,
                 "gouraud: increments, or sierpinski (large triangles split at edge midpoints)");
-  r->add_option("--normals", render.options.normals,
+  add_option_flag(r, "--normals", render.options.normals,
                 "phong: per-pixel normals by normalize, adaptive (eq. 6) or equal-angle (eq. 7)");
   r->add_option("--spec-threshold", render.options.spec_threshold,
                 "auto: largest specular term (colour units) a triangle may leave out (default 1/510)");
-  r->add_option("--spec-method", render.options.spec_method,
+  add_option_flag(r, "--spec-method", render.options.spec_method,
                 "auto: kernel for triangles that may show a highlight: hybrid (default) or phong");
-  r->add_option("--classifier", render.options.classifier,
+  add_option_flag(r, "--classifier", render.options.classifier,
                 "auto: bound (error-checked, default) or paper (highlight -> specular, rest -> Gouraud)");
   r->add_option("--classify-min-px", render.options.classify_min_px,
                 "auto: blocks of triangles whose screen boxes average fewer pixels than this take the "
                 "specular path unclassified, as classifying costs more than it saves there (default 80; "
                 "0: classify every triangle)");
-  r->add_option("--hidden-faces", render.options.hidden_faces,
+  add_option_flag(r, "--hidden-faces", render.options.hidden_faces,
                 "skip (default): cull back faces their own closed mesh provably hides; draw: draw every face");
   r->add_option("--aov", render.aov,
                 "also write per-pixel outputs: a comma list of depth, normal, triangle_id, object_id, or "
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
   r->add_option("--config", "render options from a JSON file (fastshade tune writes one); flags given "
                             "here override its keys")
       ->type_name("FILE");
-  r->add_option("--brdf", render.options.brdf,
+  add_option_flag(r, "--brdf", render.options.brdf,
                 "specular lobe: exact, cosk:K, schlick, schlick-pow2, quadratic, quadratic-fit, "
                 "poly2, poly3 (docs/KERNELS.md)");
 
@@ -71,9 +72,9 @@ int main(int argc, char** argv) {
   i->add_option("mesh", mesh, "mesh file (obj, off, ply, stl)")->required();
   i->add_flag("--json", info_json, "print JSON");
 
-  std::string table_isa = "best";
+  Isa table_isa = Isa::Best;
   CLI::App* b = app.add_subcommand("brdf-table", "error and cost of every BRDF approximation");
-  b->add_option("--isa", table_isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+  add_option_flag(b, "--isa", table_isa, "SIMD target: scalar, sse4, avx2, avx512, best");
 
   ReportCommand report;
   CLI::App* rep = app.add_subcommand("report", "error against time of every method on every scene");
@@ -84,7 +85,7 @@ int main(int argc, char** argv) {
   rep->add_option("--threads", report.threads, "worker threads (0 = all)")->capture_default_str();
   rep->add_option("--frames", report.frames, "timed frames per configuration after one warm-up")
       ->capture_default_str();
-  rep->add_option("--isa", report.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+  add_option_flag(rep, "--isa", report.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
   rep->add_option("--models", report.models, "the shared meshes' directory, for the default set");
   rep->add_option("--config", report.configs,
                   "measure this instead of the built-in list, repeatable: --config \"hybrid --max-error 2\"")
@@ -120,7 +121,7 @@ int main(int argc, char** argv) {
   t->add_option("--threads", tune.threads, "worker threads (0 = all)")->capture_default_str();
   t->add_option("--frames", tune.frames, "timed frames per candidate and scene after one warm-up")
       ->capture_default_str();
-  t->add_option("--isa", tune.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+  add_option_flag(t, "--isa", tune.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
   ScalingCommand scaling;
   CLI::App* bench = app.add_subcommand("bench", "benchmarks")->require_subcommand(1);
   CLI::App* sc = bench->add_subcommand(
@@ -130,7 +131,7 @@ int main(int argc, char** argv) {
                  "most threads (default: hardware threads + 1, one oversubscribed point)");
   sc->add_option("--tiles", scaling.tiles, "tile sizes, comma-separated (default 16,32,64,128)");
   sc->add_option("--frames", scaling.frames, "timed frames per point after one warm-up (default 10)");
-  sc->add_option("--method", scaling.method, "shading method (default phong)");
+  add_option_flag(sc, "--method", scaling.method, "shading method (default phong)");
   sc->add_option("--out", scaling.out_dir, "directory for scaling.csv, .json, .png (default .)");
   sc->add_flag("--no-plot", scaling.no_plot, "skip scaling.png");
   BatchCommand batch;
@@ -144,7 +145,7 @@ int main(int argc, char** argv) {
   bt->add_option("--views", batch.views, "views per mesh, turned 360/K degrees about the vertical");
   bt->add_option("--shard", batch.shard, "render part I of N (I from 0) of the sorted meshes");
   bt->add_option("--threads", batch.options.threads, "worker threads (0 = all)");
-  bt->add_option("--method", batch.options.method, "shading method (see render --help)");
+  add_option_flag(bt, "--method", batch.options.method, "shading method (see render --help)");
   bt->add_option("--format", batch.format, "image format: png, exr or tif");
   bt->add_option("--aov", batch.aov, "per-pixel outputs as render --aov: beside each image, or in it (exr)")
       ->type_name("LIST");
@@ -157,6 +158,9 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "fastshade: %s (see --help)\n", e.what());
+    return 2;
+  } catch (const InputError& e) {  // a typed flag's value (app/option_flags.h)
+    std::fprintf(stderr, "fastshade: %s\n", e.what());
     return 2;
   }
   try {

@@ -8,7 +8,6 @@
 #include "app/commands.h"
 #include "fastshade/error.h"
 #include "io/render_config.h"
-#include "shade/method.h"
 
 namespace fastshade {
 
@@ -24,8 +23,7 @@ RenderOptions resolve_render_options(const CLI::App& render_cli, const RenderOpt
     if (given(key)) copy_option(key, from_flags, options);
   // `--config tuned.json --method phong` compares the tuned frame with phong: the config's
   // keys for the classifier would make validate() refuse phong, so they go with its method.
-  const Method* method = find_method(options.method);
-  if (method && !method->classifies)
+  if (!method_classifies(options.method))
     for (const RenderConfigKey& key : kRenderConfigKeys)
       if (key.classifying_only && !given(key)) copy_option(key, RenderOptions{}, options);
   return options;

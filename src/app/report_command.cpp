@@ -17,7 +17,6 @@
 #include "app/report_output.h"
 #include "app/report_scenes.h"
 #include "app/timing_rounds.h"
-#include "core/simd_target.h"
 #include "fastshade/error.h"
 #include "io/atomic_file.h"
 
@@ -193,7 +192,7 @@ int run_report(const ReportCommand& cmd) {
   RenderOptions common;
   common.threads = cmd.threads;
   validate(common);
-  const std::string isa_name = simd_target_name(simd_target(cmd.isa));  // refuses a bad --isa first
+  const std::string isa_name(option_name(resolve_isa(cmd.isa)));  // refuses a bad --isa first
   const Plan plan = plan_configs(cmd);
   if (cmd.list_configs) {
     for (const PlannedConfig& p : plan.configs) std::printf("measured  %s\n", p.config.label.c_str());

@@ -1,20 +1,18 @@
 #include "app/report_configs.h"
 
 #include <algorithm>
+#include <optional>
 #include <sstream>
 
 #include "fastshade/error.h"
 
 namespace fastshade {
 
-namespace {
-
-bool method_known(const std::string& name) {
-  const std::vector<MethodDescription> methods = list_methods();
-  return std::any_of(methods.begin(), methods.end(), [&](const auto& m) { return m.name == name; });
+std::optional<MethodDescription> find_method(std::string_view name) {
+  for (const MethodDescription& m : list_methods())
+    if (m.name == name) return m;
+  return std::nullopt;
 }
-
-}  // namespace
 
 ReportConfig parse_config(std::string_view line, const std::string& where) {
   std::istringstream words{std::string(line)};
@@ -28,7 +26,7 @@ ReportConfig parse_config(std::string_view line, const std::string& where) {
 
 RenderOptions config_options(const ReportConfig& config, const RenderFlagsParser& parse,
                              const std::function<void(RenderOptions&)>& run_settings) {
-  if (!method_known(config.method)) throw InputError("--method", "no method '" + config.method + "' in this build");
+  if (!find_method(config.method)) throw InputError("--method", "no method '" + config.method + "' in this build");
   std::vector<std::string> flags = {"--method", config.method};
   flags.insert(flags.end(), config.flags.begin(), config.flags.end());
   RenderOptions options = parse(flags);

@@ -2,6 +2,7 @@
 // after `fastshade render --method` (the method's name, then its flags).
 #pragma once
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -54,6 +55,9 @@ struct ReportConfig {
   std::string method;              // its first word
   std::vector<std::string> flags;  // the rest, one argument each
 };
+
+// The method a configuration's first word names; none if this build has no such method.
+std::optional<MethodDescription> find_method(std::string_view name);
 
 // Splits a line at whitespace; throws InputError naming `where` if it is empty.
 ReportConfig parse_config(std::string_view line, const std::string& where);

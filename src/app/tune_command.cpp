@@ -17,11 +17,9 @@
 #include "app/timing_rounds.h"
 #include "app/tune_grid.h"
 #include "app/tune_output.h"
-#include "core/simd_target.h"
 #include "fastshade/error.h"
 #include "io/atomic_file.h"
 #include "io/render_config.h"
-#include "shade/method.h"
 
 namespace fastshade {
 
@@ -63,7 +61,7 @@ void check_usage(const TuneCommand& cmd) {
 // The config's keys: what was tuned and what it was measured with.
 std::vector<std::string_view> tuned_keys(const RenderOptions& o) {
   std::vector<std::string_view> keys = {"method", "tile", "threads", "isa", "max_error"};
-  if (find_method(o.method)->classifies)
+  if (method_classifies(o.method))
     for (const RenderConfigKey& key : kRenderConfigKeys)
       if (key.classifying_only) keys.push_back(key.key);
   return keys;
@@ -73,7 +71,7 @@ std::vector<std::string_view> tuned_keys(const RenderOptions& o) {
 
 int run_tune(const TuneCommand& cmd) {
   check_usage(cmd);
-  const std::string isa_name = simd_target_name(simd_target(cmd.isa));  // refuses a bad --isa first
+  const std::string isa_name(option_name(resolve_isa(cmd.isa)));  // refuses a bad --isa first
   RenderOptions defaults;
   defaults.threads = cmd.threads;
   defaults.isa = cmd.isa;
@@ -110,7 +108,7 @@ int run_tune(const TuneCommand& cmd) {
       table.scene_names.push_back(name);
       table.scene_paths.push_back(scene_inputs[s].path.string());
       RenderOptions yardstick = options[default_candidate];
-      yardstick.method = "reference";
+      yardstick.method = ShadingMethod::Reference;
       RenderStats reference_stats;
       const Image reference = render(scenes[s], yardstick, 1, &reference_stats);
       progress.advance(frame_cost(scenes[s]), name + ": reference");

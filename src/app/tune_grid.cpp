@@ -36,10 +36,11 @@ void validate_candidate(const Candidate& c) {
 
 // The tile is named when the candidates differ in it.
 std::string label_of(const RenderOptions& o, bool tiles_vary) {
-  std::string label = o.method + (tiles_vary ? " --tile " + std::to_string(o.tile_px) : "");
+  std::string label = std::string(option_name(o.method)) + (tiles_vary ? " --tile " + std::to_string(o.tile_px) : "");
   if (!method_classifies(o.method)) return label;
-  label += " --spec-threshold " + format_double("%.4g", o.spec_threshold) + " --spec-method " + o.spec_method;
-  if (o.classifier != RenderOptions{}.classifier) label += " --classifier " + o.classifier;
+  label += " --spec-threshold " + format_double("%.4g", o.spec_threshold) + " --spec-method " +
+           std::string(option_name(o.spec_method));
+  if (o.classifier != RenderOptions{}.classifier) label += " --classifier " + std::string(option_name(o.classifier));
   if (o.classify_min_px != RenderOptions{}.classify_min_px)
     label += " --classify-min-px " + format_double("%.4g", o.classify_min_px);
   return label;
@@ -56,7 +57,8 @@ std::size_t plan_candidates(const TuneCommand& cmd, const RenderOptions& base, s
     const bool seen = std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.options == o; });
     if (!seen) out.push_back({"", o});
   };
-  for (const std::string& method : cmd.methods) {
+  for (const std::string& method_name : cmd.methods) {
+    const auto method = parse_option<ShadingMethod>(method_name, "--methods");
     for (int tile : cmd.tiles) {
       RenderOptions o = base;
       o.method = method;
@@ -69,11 +71,11 @@ std::size_t plan_candidates(const TuneCommand& cmd, const RenderOptions& base, s
         for (const std::string& spec_method : cmd.spec_methods)
           for (const std::string& classifier : cmd.classifiers)
             for (double classify_min_px : cmd.classify_min_pxs) {
-              // The paper's rule classifies every triangle whatever the bound: one candidate.
-              if (classifier == "paper" && classify_min_px != cmd.classify_min_pxs.front()) continue;
               o.spec_threshold = threshold;
-              o.spec_method = spec_method;
-              o.classifier = classifier;
+              o.spec_method = parse_option<SpecMethod>(spec_method, "--spec-methods");
+              o.classifier = parse_option<ClassifierRule>(classifier, "--classifiers");
+              // The paper's rule classifies every triangle whatever the bound: one candidate.
+              if (o.classifier == ClassifierRule::Paper && classify_min_px != cmd.classify_min_pxs.front()) continue;
               o.classify_min_px = classify_min_px;
               add(o);
             }

@@ -30,8 +30,9 @@ constexpr int kMaxViews = 360;
 // (with --size), the shading options, the format. Not threads or tiles (the image is the same).
 std::string settings_text(const SceneTemplate& scene, const BatchSpec& spec) {
   const RenderOptions& o = spec.options;
-  return scene.canonical() + "|method=" + o.method + "|brdf=" + o.brdf + "|normals=" + o.normals +
-         "|gouraud=" + o.gouraud + "|max_error=" + std::to_string(o.max_error) +
+  return scene.canonical() + "|method=" + std::string(option_name(o.method)) + "|brdf=" + option_name(o.brdf) +
+         "|normals=" + std::string(option_name(o.normals)) + "|gouraud=" + std::string(option_name(o.gouraud)) +
+         "|max_error=" + std::to_string(o.max_error) +
          "|srgb=" + std::to_string(o.srgb) + "|views=" + std::to_string(spec.views) +
          "|format=" + spec.format + (spec.aovs.any() ? "|aov=" + aov_list_text(spec.aovs) : "");
 }

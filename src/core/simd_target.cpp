@@ -9,15 +9,15 @@ namespace fastshade {
 
 namespace {
 
-struct IsaName {
-  const char* name;
+struct IsaTarget {
+  Isa isa;
   int64_t target;
 };
-// "scalar" is Highway's portable fallback: HWY_SCALAR on x86-64 builds whose baseline is
+// Isa::Scalar is Highway's portable fallback: HWY_SCALAR on x86-64 builds whose baseline is
 // SSE2 (this one), HWY_EMU128 elsewhere; whichever the build compiled.
 constexpr int64_t kScalarTarget = (HWY_TARGETS & HWY_SCALAR) ? HWY_SCALAR : HWY_EMU128;
-constexpr IsaName kIsas[] = {{"scalar", kScalarTarget}, {"sse4", HWY_SSE4}, {"avx2", HWY_AVX2},
-                             {"avx512", HWY_AVX3}};
+constexpr IsaTarget kIsas[] = {
+    {Isa::Scalar, kScalarTarget}, {Isa::Sse4, HWY_SSE4}, {Isa::Avx2, HWY_AVX2}, {Isa::Avx512, HWY_AVX3}};
 
 int64_t cpu_targets() { return hwy::SupportedTargets() & HWY_TARGETS; }
 
@@ -36,30 +36,37 @@ int64_t best_target() {
 
 }  // namespace
 
-SimdTarget simd_target(std::string_view name) {
-  if (name == "best") return {table_index(best_target())};
-  for (const IsaName& isa : kIsas)
-    if (name == isa.name) {
-      if (!(cpu_targets() & isa.target))
-        throw InputError("--isa", "this CPU or build cannot run '" + std::string(name) + "'");
-      return {table_index(isa.target)};
+SimdTarget simd_target(Isa isa) {
+  if (isa == Isa::Best) return {table_index(best_target())};
+  for (const IsaTarget& t : kIsas)
+    if (t.isa == isa) {
+      if (!(cpu_targets() & t.target))
+        throw InputError("--isa", "this CPU or build cannot run '" + std::string(option_name(isa)) + "'");
+      return {table_index(t.target)};
     }
-  throw InputError("--isa", "unknown ISA '" + std::string(name) + "' (expected scalar, sse4, avx2, avx512 or best)");
+  throw InputError("--isa", "not an ISA (value " + std::to_string(static_cast<int>(isa)) + ")");
 }
 
 std::string simd_target_name(SimdTarget target) {
-  if (target.table_index == 0) target = simd_target("best");
-  for (const IsaName& isa : kIsas)
-    if (table_index(isa.target) == target.table_index) return isa.name;
+  if (target.table_index == 0) target = simd_target(Isa::Best);
+  for (const IsaTarget& t : kIsas)
+    if (table_index(t.target) == target.table_index) return std::string(option_name(t.isa));
   const int64_t best = best_target();  // a target outside kIsas (the build's HWY_TARGETS)
   return table_index(best) == target.table_index ? hwy::TargetName(best) : "unknown";
 }
 
-std::vector<std::string> available_isas() {
-  std::vector<std::string> names;
-  for (const IsaName& isa : kIsas)
-    if (cpu_targets() & isa.target) names.push_back(isa.name);
-  return names;
+Isa resolve_isa(Isa isa) {
+  const std::vector<Isa> isas = available_isas();
+  if (isa == Isa::Best) return isas.back();
+  (void)simd_target(isa);  // refuses an ISA this CPU cannot run
+  return isa;
+}
+
+std::vector<Isa> available_isas() {
+  std::vector<Isa> out;
+  for (const IsaTarget& t : kIsas)
+    if (cpu_targets() & t.target) out.push_back(t.isa);
+  return out;
 }
 
 }  // namespace fastshade

@@ -5,8 +5,8 @@
 #pragma once
 #include <cstdint>
 #include <string>
-#include <string_view>
-#include <vector>
+
+#include "fastshade/options.h"
 
 namespace fastshade {
 
@@ -17,10 +17,9 @@ struct SimdTarget {
   bool operator==(const SimdTarget&) const = default;
 };
 
-// "scalar" (Highway's portable fallback), "sse4", "avx2", "avx512" or "best". Throws
-// InputError ("--isa: ...") for an unknown name or one this CPU or build cannot run.
-SimdTarget simd_target(std::string_view isa);
+// Throws InputError ("--isa: ...") for an ISA this CPU or build cannot run. available_isas()
+// (include/fastshade/options.h) lists those it can.
+SimdTarget simd_target(Isa isa);
 std::string simd_target_name(SimdTarget target);  // "avx512"; the best one's name for 0
-std::vector<std::string> available_isas();        // compiled and run by this CPU, best last
 
 }  // namespace fastshade

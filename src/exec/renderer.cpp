@@ -60,7 +60,7 @@ void size_aovs(const AovSet& which, AovImages& out, int width, int height) {
 }  // namespace
 
 struct Renderer::Impl {
-  RenderChoices choices;
+  RenderOptions choices;
   SceneGeometry geometry;
   const Method* method;
   ViewTransform xf;
@@ -79,12 +79,12 @@ struct Renderer::Impl {
   AovFrame aov;  // aov.which: what the front end was last set up for
 
   Impl(const Scene& scene, const RenderOptions& o, const ResolvedOptions& resolved)
-      : choices(resolved.choices),
+      : choices(resolved.options),
         geometry(flatten_scene(scene)),
         method(resolved.method),
         xf(view_transform(scene)),
         arena(o.threads) {
-    const RenderChoices& c = choices;
+    const RenderOptions& c = choices;
     frame.simd = resolved.simd;
     setup.simd = frame.simd;
     frame.grid = make_grid(scene.width, scene.height,
@@ -96,7 +96,7 @@ struct Renderer::Impl {
     if (classified) {
       const bool paper_rule = c.classifier == ClassifierRule::Paper;
       classifier.emplace(frame.shade,
-                         ClassifierParams{c.spec_threshold, auto_gouraud_budget(c.max_error_lsb), paper_rule});
+                         ClassifierParams{c.spec_threshold, auto_gouraud_budget(c.max_error), paper_rule});
       setup.classifier = &*classifier;
       // The literal rule is there to measure the paper's classifier: it classifies everything.
       setup.classify_min_box_px = paper_rule ? 0.0 : c.classify_min_px;
@@ -104,14 +104,14 @@ struct Renderer::Impl {
     setup.viewport = make_viewport(scene.width, scene.height);
     setup.cull = scene.cull;
     // Culling back faces would remove an inward-wound mesh's occluders.
-    if (c.skip_hidden_faces && scene.cull == Cull::None) {
+    if (c.hidden_faces == HiddenFaces::Skip && scene.cull == Cull::None) {
       closures = analyze_closures(geometry);
       setup.occlusion = &occlusion;
     }
     set_needs(AovSet{});
     aov.view_to_world = glm::transpose(glm::dmat3(glm::dmat4(xf.view)));
     for (const ObjectRange& object : geometry.objects) aov.object_first_triangle.push_back(object.first_triangle);
-    setup.sierpinski = c.sierpinski;
+    setup.sierpinski = c.gouraud == GouraudMode::Sierpinski;
     setup.segment_steps = method->segment_steps(c);
     const std::size_t chunks =
         (geometry.triangles.size() + limits::kTrianglesPerChunk - 1) / limits::kTrianglesPerChunk;
@@ -120,7 +120,7 @@ struct Renderer::Impl {
     stats.tiles_total = frame.grid.tile_count();
     stats.threads = arena.threads();
     stats.tile = frame.grid.tile_px;
-    stats.method = o.method;
+    stats.method = option_name(o.method);
     stats.isa = simd_target_name(frame.simd);
   }
 

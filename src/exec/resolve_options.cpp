@@ -5,25 +5,17 @@
 
 #include "core/limits.h"
 #include "fastshade/error.h"
-#include "light/brdf.h"
-#include "shade/normal_blocks.h"
 
 namespace fastshade {
 
 namespace {
 
-const Method& find_method_or_throw(const std::string& name) {
-  if (const Method* method = find_method(name)) return *method;
-  std::string names;
-  for (const Method& m : all_methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
-  throw InputError("--method", "unknown method '" + name + "' (expected one of: " + names + ")");
-}
-
-// One of two spellings, as the flag's value.
-bool parse_pair(const std::string& text, const char* flag, const char* first, const char* second) {
-  if (text == first) return true;
-  if (text == second) return false;
-  throw InputError(flag, std::string("expected ") + first + " or " + second + ", got '" + text + "'");
+// A value cast from outside its enum (C++ callers can make one) names no spelling.
+template <OptionEnum E>
+void check_enum(E value, const char* flag) {
+  if (option_name(value) == "?")
+    throw InputError(flag, "not a " + std::string(OptionSpellings<E>::kWhat) + " (value " +
+                               std::to_string(static_cast<int>(value)) + ")");
 }
 
 // The classifier's options keep their defaults unless the method classifies.
@@ -46,38 +38,37 @@ ResolvedOptions resolve(const RenderOptions& o) {
     throw InputError("--tile", "expected a power of two from " + std::to_string(limits::kMinTilePx) + " to " +
                                    std::to_string(limits::kMaxTilePx) +
                                    ", or 0 (sized from the image and threads), got " + std::to_string(o.tile_px));
+  check_enum(o.method, "--method");
+  check_enum(o.isa, "--isa");
+  check_enum(o.brdf.kind, "--brdf");
+  check_enum(o.normals, "--normals");
+  check_enum(o.gouraud, "--gouraud");
+  check_enum(o.spec_method, "--spec-method");
+  check_enum(o.classifier, "--classifier");
+  check_enum(o.hidden_faces, "--hidden-faces");
+  if (o.brdf.kind == BrdfKind::CosK && (o.brdf.k < kMinCosK || o.brdf.k > kMaxCosK))
+    throw InputError("--brdf", "cosk takes a power K from " + std::to_string(kMinCosK) + " to " +
+                                   std::to_string(kMaxCosK) + ", got " + std::to_string(o.brdf.k));
   ResolvedOptions r;
-  r.method = &find_method_or_throw(o.method);
+  r.method = &find_method(o.method);
   r.simd = simd_target(o.isa);
-  RenderChoices& c = r.choices;
-  c.brdf = parse_brdf(o.brdf, "--brdf");
-  c.normals = parse_normals(o.normals, "--normals");
-  c.srgb = o.srgb;
-  c.sierpinski = !parse_pair(o.gouraud, "--gouraud", "increments", "sierpinski");
-  c.skip_hidden_faces = parse_pair(o.hidden_faces, "--hidden-faces", "skip", "draw");
-  if (c.sierpinski && !r.method->lights_subtriangles)
+  if (o.gouraud == GouraudMode::Sierpinski && !r.method->lights_subtriangles)
     throw InputError("--gouraud", "sierpinski subtriangles apply to --method gouraud only");
   if (!(o.max_error >= 0 && o.max_error <= 255))
     throw InputError("--max-error", "expected 0 to 255 (8-bit steps), got " + std::to_string(o.max_error));
-  c.max_error_lsb = o.max_error;
   if (!r.method->classifies) refuse_classifier_options(o);
-  c.spec_method = parse_pair(o.spec_method, "--spec-method", "hybrid", "phong") ? SpecMethod::Hybrid
-                                                                                 : SpecMethod::Phong;
-  c.classifier = parse_pair(o.classifier, "--classifier", "bound", "paper") ? ClassifierRule::Bound
-                                                                              : ClassifierRule::Paper;
   if (!(o.spec_threshold >= 0.0 && o.spec_threshold <= 1.0))
     throw InputError("--spec-threshold", "expected 0 to 1 (colour units; 1/510 is half an 8-bit step), got " +
                                              std::to_string(o.spec_threshold));
-  c.spec_threshold = o.spec_threshold;
   if (!(o.classify_min_px >= 0.0 && std::isfinite(o.classify_min_px)))
     throw InputError("--classify-min-px",
                      "expected a finite number of pixels >= 0 (0: classify every triangle), got " +
                          std::to_string(o.classify_min_px));
-  c.classify_min_px = o.classify_min_px;
-  if (const std::string why = r.method->refuse(c); !why.empty()) {
+  if (const std::string why = r.method->refuse(o); !why.empty()) {
     const std::size_t colon = why.find(": ");  // "--option: reason"
     throw InputError(why.substr(0, colon), why.substr(colon + 2));
   }
+  r.options = o;
   return r;
 }
 
@@ -85,13 +76,11 @@ void validate(const RenderOptions& options) { (void)resolve(options); }
 
 std::vector<MethodDescription> list_methods() {
   std::vector<MethodDescription> out;
-  for (const Method& m : all_methods()) out.push_back({std::string(m.name), std::string(m.summary), m.classifies});
+  for (const Method& m : all_methods())
+    out.push_back({m.id, std::string(option_name(m.id)), std::string(m.summary), m.classifies});
   return out;
 }
 
-bool method_classifies(const std::string& name) {
-  const Method* m = find_method(name);
-  return m && m->classifies;
-}
+bool method_classifies(ShadingMethod method) { return find_method(method).classifies; }
 
 }  // namespace fastshade

@@ -3,7 +3,7 @@
 #pragma once
 #include "core/simd_target.h"
 #include "fastshade/render.h"
-#include "frame/render_choices.h"
+#include "fastshade/options.h"
 #include "shade/method.h"
 
 namespace fastshade {
@@ -11,11 +11,11 @@ namespace fastshade {
 struct ResolvedOptions {
   const Method* method = nullptr;
   SimdTarget simd;  // --isa
-  RenderChoices choices;
+  RenderOptions options;
 };
 
-// Throws InputError ("--tile: ...") for an option out of range, an unknown name, or a
-// combination the method refuses.
+// Throws InputError ("--tile: ...") for an option out of range, a value outside its enum, an
+// ISA this CPU cannot run, or a combination the method refuses.
 ResolvedOptions resolve(const RenderOptions& options);
 
 }  // namespace fastshade

@@ -8,10 +8,6 @@
 
 namespace fastshade {
 
-// How per-pixel Phong gets its unit normals (--normals; shade/normal_blocks.h): normalised at
-// every pixel, or in blocks within the error budget, or rotated at equal angles.
-enum class SpanNormals { Normalize, Adaptive, EqualAngle };
-
 struct LightView {
   glm::vec3 l_view;    // unit direction toward the light
   glm::vec3 h_view;    // unit half vector for the infinite viewer, normalize(L + (0,0,1))
@@ -39,7 +35,7 @@ struct ShadeConstants {
   bool srgb = false;
   BrdfChoice brdf;  // --brdf
   float hybrid_tolerance = 0;  // hybrid and --normals adaptive: error allowed, colour units (--max-error)
-  SpanNormals normals = SpanNormals::Normalize;  // --normals
+  PhongNormals normals = PhongNormals::Normalize;  // --normals
 };
 
 }  // namespace fastshade

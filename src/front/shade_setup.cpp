@@ -24,7 +24,7 @@ double float_specular_error_lsb(const MaterialConstants& m, const std::vector<Li
 
 }  // namespace
 
-ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, const RenderChoices& c) {
+ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, const RenderOptions& c) {
   ShadeConstants k;
   k.ambient = scene.ambient;
   k.background = scene.background;
@@ -32,7 +32,7 @@ ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, cons
   k.two_sided = scene.two_sided;
   k.srgb = c.srgb;
   k.brdf = c.brdf;
-  k.hybrid_tolerance = hybrid_tolerance(c.max_error_lsb);
+  k.hybrid_tolerance = hybrid_tolerance(c.max_error);
   k.normals = c.normals;
   const glm::mat3 view_rot(xf.view);  // lookAt is a rigid motion: its 3x3 is a rotation
   for (const Light& light : scene.lights) {

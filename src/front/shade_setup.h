@@ -3,12 +3,12 @@
 // and the error budgets the kernels read.
 #pragma once
 #include "fastshade/scene.h"
-#include "frame/render_choices.h"
+#include "fastshade/options.h"
 #include "frame/shade_constants.h"
 #include "front/vertex_stage.h"
 
 namespace fastshade {
 
-ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, const RenderChoices& choices = {});
+ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, const RenderOptions& choices = {});
 
 }  // namespace fastshade

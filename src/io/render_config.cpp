@@ -18,9 +18,10 @@ using json_path::child;
 using json_path::Reader;
 using nlohmann::json;
 
-// Reads one option's value by its type; ranges and names are left to validate().
+// Reads one option's value by its type and spelling; ranges are left to validate().
 void read_option(const Reader& r, const json& value, const RenderConfigKey& key, RenderOptions& o) {
   const std::string path = child("options", key.key);
+  const std::string where = r.source() + ": " + path;  // as Reader::fail names it
   std::visit(
       [&](auto member) {
         using T = std::remove_reference_t<decltype(o.*member)>;
@@ -30,10 +31,21 @@ void read_option(const Reader& r, const json& value, const RenderConfigKey& key,
           o.*member = r.number(value, path, json_path::kAnyNumber);
         else if constexpr (std::is_same_v<T, bool>)
           o.*member = r.boolean(value, path);
+        else if constexpr (std::is_same_v<T, BrdfChoice>)
+          o.*member = parse_brdf(r.string(value, path), where);
         else
-          o.*member = r.string(value, path);
+          o.*member = parse_option<T>(r.string(value, path), where);
       },
       key.member);
+}
+
+// A value as the file spells it.
+template <class T>
+nlohmann::ordered_json option_json(const T& value) {
+  if constexpr (std::is_arithmetic_v<T>)
+    return value;
+  else
+    return std::string(option_name(value));
 }
 
 // validate() names a flag ("--tile: ..."); in a config the culprit is the flag's key.
@@ -88,7 +100,7 @@ std::string render_config_text(const RenderOptions& options, std::span<const std
   nlohmann::ordered_json values = nlohmann::ordered_json::object();
   for (const RenderConfigKey& key : kRenderConfigKeys) {
     if (std::find(keys.begin(), keys.end(), key.key) == keys.end()) continue;
-    std::visit([&](auto member) { values[std::string(key.key)] = options.*member; }, key.member);
+    std::visit([&](auto member) { values[std::string(key.key)] = option_json(options.*member); }, key.member);
   }
   nlohmann::ordered_json file = {{"options", values}};
   if (!provenance.is_null()) file["provenance"] = provenance;

@@ -12,15 +12,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fastshade/render.h"
+#include "fastshade/options.h"
 
 namespace fastshade {
 
 struct RenderConfigKey {
   std::string_view key;   // in the file's "options"
   std::string_view flag;  // the `render` flag it stands for
-  std::variant<int RenderOptions::*, double RenderOptions::*, bool RenderOptions::*,
-               std::string RenderOptions::*>
+  std::variant<int RenderOptions::*, double RenderOptions::*, bool RenderOptions::*, ShadingMethod RenderOptions::*,
+               Isa RenderOptions::*, BrdfChoice RenderOptions::*, PhongNormals RenderOptions::*,
+               GouraudMode RenderOptions::*, SpecMethod RenderOptions::*, ClassifierRule RenderOptions::*,
+               HiddenFaces RenderOptions::*>
       member;
   bool classifying_only;  // applies to --method auto only, as validate() enforces
 };

@@ -7,7 +7,6 @@
 #include <numbers>
 
 #include "core/limits.h"
-#include "fastshade/error.h"
 #include "light/fast_math.h"
 
 namespace fastshade {
@@ -213,48 +212,15 @@ double brdf_max_error(const BrdfParams& p, double n, int points) {
   return worst;
 }
 
-std::string brdf_name(const BrdfChoice& choice) {
-  switch (choice.kind) {
-    case BrdfKind::Exact: return "exact";
-    case BrdfKind::CosK: return "cosk:" + std::to_string(choice.k);
-    case BrdfKind::Schlick: return "schlick";
-    case BrdfKind::SchlickPow2: return "schlick-pow2";
-    case BrdfKind::Quadratic: return "quadratic";
-    case BrdfKind::QuadraticFit: return "quadratic-fit";
-    case BrdfKind::Poly2: return "poly2";
-    case BrdfKind::Poly3: return "poly3";
+std::vector<BrdfChoice> brdf_choices() {
+  std::vector<BrdfChoice> out;
+  for (const auto& [kind, name] : OptionSpellings<BrdfKind>::kValues) {
+    if (kind == BrdfKind::CosK)
+      for (const int k : {1, 3}) out.push_back({kind, k});
+    else
+      out.push_back({kind});
   }
-  return "?";
-}
-
-std::vector<std::string> brdf_names() {
-  return {"exact", "cosk:1", "cosk:3", "schlick", "schlick-pow2", "quadratic", "quadratic-fit",
-          "poly2", "poly3"};
-}
-
-BrdfChoice parse_brdf(std::string_view text, const std::string& where) {
-  BrdfChoice c;
-  if (text.starts_with("cosk:")) {
-    const std::string k(text.substr(5));
-    if (k.size() != 1 || k[0] < '1' || k[0] > '8')
-      throw InputError(where, "cosk takes a power K from 1 to 8, as in cosk:3 (got '" + std::string(text) + "')");
-    c.kind = BrdfKind::CosK;
-    c.k = k[0] - '0';
-    return c;
-  }
-  const std::pair<std::string_view, BrdfKind> names[] = {
-      {"exact", BrdfKind::Exact},          {"schlick", BrdfKind::Schlick},
-      {"schlick-pow2", BrdfKind::SchlickPow2}, {"quadratic", BrdfKind::Quadratic},
-      {"quadratic-fit", BrdfKind::QuadraticFit}, {"poly2", BrdfKind::Poly2},
-      {"poly3", BrdfKind::Poly3}};
-  for (const auto& [name, kind] : names)
-    if (text == name) {
-      c.kind = kind;
-      return c;
-    }
-  throw InputError(where, "unknown BRDF '" + std::string(text) +
-                              "' (expected exact, cosk:K, schlick, schlick-pow2, quadratic, "
-                              "quadratic-fit, poly2 or poly3)");
+  return out;
 }
 
 BrdfParams make_brdf(const BrdfChoice& choice, double n) {

@@ -13,11 +13,8 @@
 
 namespace fastshade {
 
-// Parses "exact", "cosk:K" (K integer 1..8), "schlick", "schlick-pow2", "quadratic",
-// "quadratic-fit", "poly2", "poly3"; throws InputError naming `where` otherwise.
-BrdfChoice parse_brdf(std::string_view text, const std::string& where);
-std::string brdf_name(const BrdfChoice& choice);  // the spelling parse_brdf reads
-std::vector<std::string> brdf_names();  // one spelling each, "cosk:3" for CosK
+// Every kind once, CosK with K = 1 and 3: what tables and tests sweep.
+std::vector<BrdfChoice> brdf_choices();
 
 // Fits and precomputes the parameters for shininess n in [1, 1e6] (fits take well under a
 // millisecond; done once per material and frame).

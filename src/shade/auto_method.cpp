@@ -34,19 +34,19 @@ AttrNeeds auto_needs(const ShadeConstants& k) {
           .diffuse_color = true};
 }
 
-TileDraw select_auto(SimdTarget simd, const ShadeConstants& k, const RenderChoices& c) {
+TileDraw select_auto(SimdTarget simd, const ShadeConstants& k, const RenderOptions& c) {
   if (k.lights.empty()) return {select_gouraud_diffuse(simd, k)};
   TileDraw draw;
   draw.any = draw_by_path;
   draw.path[static_cast<int>(ShadePath::GouraudDiffuse)] = select_gouraud_diffuse(simd, k);
   draw.path[static_cast<int>(ShadePath::PixelDiffuse)] =
-      k.normals == SpanNormals::Normalize ? select_phong_diffuse(simd, k) : select_phong_normals_diffuse(simd, k);
+      k.normals == PhongNormals::Normalize ? select_phong_diffuse(simd, k) : select_phong_normals_diffuse(simd, k);
   draw.path[static_cast<int>(ShadePath::Specular)] =
       c.spec_method == SpecMethod::Phong ? select_phong(simd, k) : select_hybrid(simd, k);
   return draw;
 }
 
-SegmentSteps auto_segment_steps(const RenderChoices& c) {
+SegmentSteps auto_segment_steps(const RenderOptions& c) {
   return c.spec_method == SpecMethod::Hybrid ? SegmentSteps::SpecularPath : SegmentSteps::None;
 }
 

@@ -10,7 +10,7 @@
 #include "core/simd_target.h"
 #include "frame/frame.h"
 #include "frame/method_needs.h"
-#include "frame/render_choices.h"
+#include "fastshade/options.h"
 #include "raster/spans.h"
 
 namespace fastshade {
@@ -46,13 +46,13 @@ struct TileDraw {
 };
 
 struct Method {
-  std::string_view name;
+  ShadingMethod id;  // its spelling: option_name(id)
   std::string_view summary;
   AttrNeeds (*needs)(const ShadeConstants& shade);
   // Chooses the variant for this frame (ISA, viewer, sRGB...): decided once, outside loops.
-  TileDraw (*select)(SimdTarget simd, const ShadeConstants& shade, const RenderChoices& choices);
+  TileDraw (*select)(SimdTarget simd, const ShadeConstants& shade, const RenderOptions& choices);
   // Why these choices make no sense with this method ("--brdf: ..."), or "" if they do.
-  std::string (*refuse)(const RenderChoices& choices);
+  std::string (*refuse)(const RenderOptions& choices);
   // Whether the front end classifies triangles into shading paths for this method (and the
   // classifier's options apply).
   bool classifies;
@@ -60,11 +60,11 @@ struct Method {
   // vertices are lit, which only a method lighting vertices alone can use.
   bool lights_subtriangles;
   // Which triangles the front end gives a hybrid segment length (frame/method_needs.h).
-  SegmentSteps (*segment_steps)(const RenderChoices& choices);
+  SegmentSteps (*segment_steps)(const RenderOptions& choices);
 };
 
 std::span<const Method> all_methods();
-const Method* find_method(std::string_view name);  // nullptr if unknown
+const Method& find_method(ShadingMethod id);  // every ShadingMethod has one
 
 // Packs a colour the way the kernels do (for scalar paths and background fills).
 inline uint32_t pack_rgba(uint8_t r, uint8_t g, uint8_t b) {

@@ -10,17 +10,17 @@ AttrNeeds reference_needs(const ShadeConstants& shade);
 // float cannot hold (MaterialConstants::shade_in_double), decided per triangle at setup.
 void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& target);
 DrawTriangleFn select_reference(SimdTarget simd, const ShadeConstants& shade);  // scalar: ignores simd
-std::string reference_refuses(const RenderChoices& choices);
+std::string reference_refuses(const RenderOptions& choices);
 
 AttrNeeds phong_needs(const ShadeConstants& shade);
 DrawTriangleFn select_phong(SimdTarget simd, const ShadeConstants& shade);
 DrawTriangleFn select_phong_normals(SimdTarget simd, const ShadeConstants& shade);  // --normals other than normalize
 
 // Methods that interpolate no per-pixel normal refuse --normals.
-std::string refuses_normals(const RenderChoices& choices);
+std::string refuses_normals(const RenderOptions& choices);
 
 // For methods that take every option.
-inline std::string accepts_all(const RenderChoices&) { return {}; }
+inline std::string accepts_all(const RenderOptions&) { return {}; }
 
 AttrNeeds gouraud_needs(const ShadeConstants& shade);
 DrawTriangleFn select_gouraud(SimdTarget simd, const ShadeConstants& shade);
@@ -32,8 +32,8 @@ DrawTriangleFn select_phong_diffuse(SimdTarget simd, const ShadeConstants& shade
 DrawTriangleFn select_phong_normals_diffuse(SimdTarget simd, const ShadeConstants& shade);
 
 AttrNeeds auto_needs(const ShadeConstants& shade);
-TileDraw select_auto(SimdTarget simd, const ShadeConstants& shade, const RenderChoices& choices);
-SegmentSteps auto_segment_steps(const RenderChoices& choices);
+TileDraw select_auto(SimdTarget simd, const ShadeConstants& shade, const RenderOptions& choices);
+SegmentSteps auto_segment_steps(const RenderOptions& choices);
 
 DrawTriangleFn select_hybrid(SimdTarget simd, const ShadeConstants& shade);
 

@@ -3,18 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fastshade/error.h"
 #include "light/fast_math.h"
 
 namespace fastshade {
-
-SpanNormals parse_normals(std::string_view text, const std::string& where) {
-  if (text == "normalize") return SpanNormals::Normalize;
-  if (text == "adaptive") return SpanNormals::Adaptive;
-  if (text == "equal-angle") return SpanNormals::EqualAngle;
-  throw InputError(where, "unknown normals mode '" + std::string(text) +
-                              "' (expected normalize, adaptive or equal-angle)");
-}
 
 namespace {
 
@@ -77,7 +68,7 @@ void normalise_weights(float c, NormalBlock& out) {
 
 }  // namespace
 
-void make_normal_block(const PhongSpanInput& in, SpanNormals mode, float tol, int xb, int py,
+void make_normal_block(const PhongSpanInput& in, PhongNormals mode, float tol, int xb, int py,
                        int xl, int xr, NormalBlock& out) {
   const int block = limits::kSeedBlockPx;
   const int xa = std::clamp(xb, xl, xr), xz = std::clamp(xb + block, xl, xr);
@@ -96,13 +87,13 @@ void make_normal_block(const PhongSpanInput& in, SpanNormals mode, float tol, in
   const bool exact = !(sens.turning * parametrisation_rad <= 0.5f * tol);
   const float parametrisation_error = exact ? 0.0f : sens.turning * parametrisation_rad;
   linear_weights(xb, xa, length, la, lz, exact, out);
-  if (mode == SpanNormals::Adaptive) {
+  if (mode == PhongNormals::Adaptive) {
     // The weighted unit normals are shortest, cos(psi / 2) = sqrt((1 + c) / 2), at equal weights.
     const float shortening = 1.0f - std::sqrt(0.5f * (1.0f + c));
     if (shortening * sens.shortening <= tol - parametrisation_error) return;  // lerp suffices
     return normalise_weights(c, out);
   }
-  if (mode != SpanNormals::EqualAngle) return;
+  if (mode != PhongNormals::EqualAngle) return;
   // The slerp's equal angles differ from the exact parametrisation's by psi^3 / 48 at most
   // for psi <= pi / 2 (62 for small psi; STABILITY.md "B2"), plus the perspective term: past
   // the budget, or for ends more than a right angle apart (a fold), the exact weights, normalised.

@@ -29,9 +29,6 @@
 
 namespace fastshade {
 
-
-SpanNormals parse_normals(std::string_view text, const std::string& where);
-
 struct NormalBlock {
   float na[3], nz[3];                       // unit normals at the block's clamped ends
   // By x - xb; padded so a vector starting anywhere in the block may load past its end.
@@ -41,7 +38,7 @@ struct NormalBlock {
 
 // [xl, xr]: the row's covered run in the whole triangle. tol: the shading error allowed, in
 // colour units (adaptive only).
-void make_normal_block(const PhongSpanInput& in, SpanNormals mode, float tol, int xb, int py,
+void make_normal_block(const PhongSpanInput& in, PhongNormals mode, float tol, int xb, int py,
                        int xl, int xr, NormalBlock& out);
 
 }  // namespace fastshade

@@ -72,7 +72,7 @@ AttrNeeds phong_needs(const ShadeConstants& shade) {
 }
 
 DrawTriangleFn select_phong(SimdTarget simd, const ShadeConstants& shade) {
-  if (shade.normals != SpanNormals::Normalize) return select_phong_normals(simd, shade);
+  if (shade.normals != PhongNormals::Normalize) return select_phong_normals(simd, shade);
   return FASTSHADE_DISPATCH(simd, SelectPhong)(shade.local_viewer, shade.brdf.kind);
 }
 

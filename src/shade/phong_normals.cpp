@@ -21,7 +21,7 @@ namespace fastshade {
 namespace HWY_NAMESPACE {
 
 template <bool kLocal, LobeKernel kLobe, bool kSpecular = true>
-void NormalsSpanImpl(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
+void NormalsSpanImpl(const PhongSpanInput& in, PhongNormals mode, float tol, const HybridRun& run,
                      int py, int x0, int x1, RowTarget row) {
   const hn::ScalableTag<float> d;
   constexpr int kBlock = limits::kSeedBlockPx;
@@ -52,14 +52,14 @@ void DrawPhongNormals(const Frame& frame, uint32_t entry, const TileTarget& tt) 
       });
 }
 
-using NormalsSpanFn = void (*)(const PhongSpanInput&, SpanNormals, float, const HybridRun&, int, int,
+using NormalsSpanFn = void (*)(const PhongSpanInput&, PhongNormals, float, const HybridRun&, int, int,
                                int, RowTarget);
 FASTSHADE_DEFINE_VARIANT_PICKER(SelectPhongNormals, DrawPhongNormals, DrawTriangleFn)
 FASTSHADE_DEFINE_VARIANT_PICKER(PickNormalsSpan, NormalsSpanImpl, NormalsSpanFn)
 
 DrawTriangleFn SelectPhongNormalsDiffuse() { return &DrawPhongNormals<false, LobeKernel::Exact, false>; }
 
-void NormalsSpan(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+void NormalsSpan(const PhongSpanInput& in, PhongNormals mode, float tol, const HybridRun& run, int py,
                  int x0, int x1, RowTarget row) {
   PickNormalsSpan(in.shade->local_viewer, in.material->lobe.kind)(in, mode, tol, run, py,
                                                                                   x0, x1, row);
@@ -84,14 +84,14 @@ DrawTriangleFn select_phong_normals_diffuse(SimdTarget simd, const ShadeConstant
   return FASTSHADE_DISPATCH(simd, SelectPhongNormalsDiffuse)();
 }
 
-void normals_span(SimdTarget simd, const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+void normals_span(SimdTarget simd, const PhongSpanInput& in, PhongNormals mode, float tol, const HybridRun& run, int py,
                   int x0, int x1, RowTarget row) {
   FASTSHADE_DISPATCH(simd, NormalsSpan)(in, mode, tol, run, py, x0, x1, row);
 }
 
 
 // The scalar twin of NormalsSpan.
-void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
+void normals_span_scalar(const PhongSpanInput& in, PhongNormals mode, float tol, const HybridRun& run,
                          int py, int x0, int x1, RowTarget row) {
   const bool srgb = in.shade->srgb;
   const int block = limits::kSeedBlockPx;

@@ -56,8 +56,8 @@ AttrNeeds reference_needs(const ShadeConstants& shade) {
 
 DrawTriangleFn select_reference(SimdTarget, const ShadeConstants&) { return draw_reference; }
 
-std::string reference_refuses(const RenderChoices& c) {
-  if (c.normals != SpanNormals::Normalize)
+std::string reference_refuses(const RenderOptions& c) {
+  if (c.normals != PhongNormals::Normalize)
     return "--normals: the reference method normalises exactly in double; use --method phong";
   if (c.brdf.kind != BrdfKind::Exact)
     return "--brdf: the reference method evaluates cos^n exactly in double; use --brdf with "

@@ -38,9 +38,9 @@ void phong_span(SimdTarget simd, const PhongSpanInput& in, int py, int x0, int x
 void hybrid_span(SimdTarget simd, const PhongSpanInput& in, const HybridRun& run, int py, int x0, int x1, RowTarget row);
 
 // --normals adaptive | equal-angle (shade/normal_blocks.h); run.step is unused.
-void normals_span_scalar(const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run,
+void normals_span_scalar(const PhongSpanInput& in, PhongNormals mode, float tol, const HybridRun& run,
                          int py, int x0, int x1, RowTarget row);
-void normals_span(SimdTarget simd, const PhongSpanInput& in, SpanNormals mode, float tol, const HybridRun& run, int py,
+void normals_span(SimdTarget simd, const PhongSpanInput& in, PhongNormals mode, float tol, const HybridRun& run, int py,
                   int x0, int x1, RowTarget row);
 
 // quantize() (light/lighting.h) as the SIMD kernels compute it: the same float operations,

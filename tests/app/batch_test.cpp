@@ -213,7 +213,7 @@ TEST_F(Batch, EveryBadOptionIsAUsageError) {
       {[](BatchCommand& c) { c.format = "gif"; }, "--format"},
       {[](BatchCommand& c) { c.shard = "1/1"; }, "--shard"},
       {[](BatchCommand& c) { c.options.threads = -1; }, "--threads"},
-      {[](BatchCommand& c) { c.options.method = "magic"; }, "--method"},
+      {[](BatchCommand& c) { c.options.method = static_cast<ShadingMethod>(99); }, "--method"},
       {[&](BatchCommand& c) { c.scene = (dir_ / "explicit.json").string(); }, "fit camera"},
       {[&](BatchCommand& c) { c.scene = (dir_ / "none.json").string(); }, "none.json"},
       {[&](BatchCommand& c) { c.inputs = {(dir_ / "m" / "a.off").string() + ".md"}; }, "a.off.md"},

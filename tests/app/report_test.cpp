@@ -100,9 +100,9 @@ bool table_has(std::string_view line) {
 }
 
 TEST(ReportConfigs, TableCoversEveryOptionWorthKnowing) {
-  for (const std::string& brdf : brdf_names()) {
-    if (brdf != "exact") {
-      EXPECT_TRUE(table_has("phong --brdf " + brdf)) << brdf;
+  for (const BrdfChoice& brdf : brdf_choices()) {
+    if (brdf.kind != BrdfKind::Exact) {
+      EXPECT_TRUE(table_has("phong --brdf " + option_name(brdf))) << option_name(brdf);
     }
   }
   for (const char* normals : {"adaptive", "equal-angle"})

@@ -95,7 +95,7 @@ TEST_F(TuneCli, BadUsageExitsTwoAndWritesNothing) {
   expect_bad_input(args + " --tiles 16,48", "--tiles: expected a power of two");
   expect_bad_input(args + " --methods auto,nope", "--methods: unknown method 'nope'");
   expect_bad_input(args + " --thresholds 2", "--thresholds: expected 0 to 1");
-  expect_bad_input(args + " --spec-methods gouraud", "--spec-methods: expected hybrid or phong");
+  expect_bad_input(args + " --spec-methods gouraud", "--spec-methods: unknown specular method 'gouraud' (expected hybrid or phong)");
   expect_bad_input(args + " --classify-min-pxs 40,-1", "--classify-min-pxs: expected a finite number of pixels");
   expect_bad_input(args + " --max-error -1", "--max-error");
   expect_bad_input(args + " --min-gain 500", "--min-gain");
@@ -136,7 +136,7 @@ TEST_F(TuneCli, BadConfigsFailWithOneLineNamingFileAndKey) {
   const fs::path unknown = write("unknown.json", R"({"options": {"tiles": 32}})");
   expect_bad_input(render + unknown.string(), unknown.string() + ": options.tiles: unknown key");
   const fs::path bad = write("bad.json", R"({"options": {"method": "auto", "spec_method": "fast"}})");
-  expect_bad_input(render + bad.string(), bad.string() + ": options.spec_method: expected");
+  expect_bad_input(render + bad.string(), bad.string() + ": options.spec_method: unknown specular method 'fast'");
   expect_bad_input(render + (dir_ / "none.json").string(), "none.json: no such config file");
   // The same file through `report --config`, which reads render flags as `render` does.
   const std::string report = "report " + scene_ + " --no-plots --out " + (dir_ / "rep").string();

@@ -58,8 +58,9 @@ TEST(ConeBatch, SettlesTrianglesAsClassifyDoes) {
                               {1, 5, 0.0f, {1.0 / 510.0, 0.5 / 255.0, false}},
                               {33, 20, 0.5f, {1.0 / 510.0, 2.0 / 255.0, false}}};
   int isas = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     ++isas;
     for (const Setting& s : settings) {
       const ShadeConstants k = scene(s.lights, s.shininess, s.ks);

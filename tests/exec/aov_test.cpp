@@ -204,10 +204,10 @@ long long count_ids(const std::vector<int32_t>& ids) {
 TEST(Aov, ColourUnchangedAndEveryDrawnPixelIdentified) {
   const Scene scene = default_scene();
   std::vector<RenderOptions> configs;
-  for (const std::string method : {"auto", "phong", "hybrid", "gouraud", "reference"})
+  for (const auto& [method, name] : OptionSpellings<ShadingMethod>::kValues)
     configs.push_back(RenderOptions{.threads = 2, .method = method});
-  configs.push_back(RenderOptions{.threads = 2, .method = "gouraud", .gouraud = "sierpinski"});
-  configs.push_back(RenderOptions{.threads = 2, .method = "phong", .hidden_faces = "draw"});
+  configs.push_back(RenderOptions{.threads = 2, .method = ShadingMethod::Gouraud, .gouraud = GouraudMode::Sierpinski});
+  configs.push_back(RenderOptions{.threads = 2, .method = ShadingMethod::Phong, .hidden_faces = HiddenFaces::Draw});
   for (const RenderOptions& options : configs) {
     const std::string what = options.to_string();
     RenderStats stats;

@@ -14,8 +14,8 @@ void expect_identical_across_threads_and_tiles(const Scene& scene, const std::st
                                                const std::string& name,
                                                const std::string& normals = "normalize") {
   RenderOptions base;
-  base.method = method;
-  base.normals = normals;
+  base.method = parse_option<ShadingMethod>(method, "method");
+  base.normals = parse_option<PhongNormals>(normals, "normals");
   base.threads = 1;
   base.tile_px = 64;
   const Image expected = render(scene, base);
@@ -44,8 +44,8 @@ TEST(Determinism, SceneFilesAreByteIdenticalForAnyThreadsAndTiles) {
       expect_identical_across_threads_and_tiles(scene, method, file);
     // Sierpinski parts are drawn as separate tasks but must give the parent's image exactly.
     RenderOptions whole, parts;
-    whole.method = parts.method = "gouraud";
-    parts.gouraud = "sierpinski";
+    whole.method = parts.method = ShadingMethod::Gouraud;
+    parts.gouraud = GouraudMode::Sierpinski;
     RenderStats split_stats, whole_stats;
     const Image a = render(scene, whole, 1, &whole_stats), b = render(scene, parts, 1, &split_stats);
     EXPECT_EQ(a.rgb, b.rgb) << file << ": gouraud sierpinski differs from gouraud";

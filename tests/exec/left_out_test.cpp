@@ -27,7 +27,7 @@ TEST(LeftOut, ObjectsOutsideTheFrustumAreSkippedAndChangeNothing) {
   const Scene without = parse_scene(spheres(""), "without", ".");
   for (const char* method : {"auto", "phong", "gouraud"}) {
     RenderOptions o;
-    o.method = method;
+    o.method = parse_option<ShadingMethod>(method, "method");
     RenderStats s;
     const Image a = render(with, o, 1, &s);
     EXPECT_EQ(a.rgb, render(without, o).rgb) << method;

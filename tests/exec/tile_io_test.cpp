@@ -19,8 +19,9 @@ TEST(TileIo, RgbaRowsToRgbMatchesScalarOnEveryIsaAndWidth) {
   const int stride = 160, rows = 3;
   std::vector<uint32_t> src(std::size_t(stride) * rows);
   for (uint32_t& p : src) p = rng();
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (int width = 0; width <= 2 * 64 + 1; ++width) {
       const int dst_stride = 3 * stride + 7;
       std::vector<uint8_t> lanes(std::size_t(dst_stride) * rows, 0xAB), scalar = lanes;
@@ -42,8 +43,9 @@ TEST(TileIo, StreamRowsCopiesEveryRowAtEveryAlignment) {
   const int rows = 3, dst_stride = 3 * 256 + 13;
   std::vector<uint8_t> src(std::size_t(3 * 256) * rows);
   for (uint8_t& b : src) b = static_cast<uint8_t>(rng());
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (int src_stride : {0, 3 * 256})
       for (int offset = 0; offset < 64; ++offset)
         for (int bytes = 0; bytes <= 3 * 256; bytes += (bytes < 200 ? 1 : 61)) {
@@ -72,8 +74,9 @@ TEST(TileIo, CountTilePixelsMatchesScalarOnEveryIsaAndWidth) {
     color[i] = (alphas[rng() % 7] << 24) | (rng() & 0xFFFFFF);
   }
   long long any_path = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (bool by_path : {false, true})
       for (int width = 0; width <= 2 * 16 + 1; ++width) {
         const TilePixelCounts lanes = count_tile_pixels(simd, depth.data(), color.data(), stride, width, rows, by_path);
@@ -92,8 +95,9 @@ TEST(TileIo, CountTilePixelsMatchesScalarOnEveryIsaAndWidth) {
 // lanes), and nothing past a row's width changes.
 TEST(TileIo, ClearTileMatchesScalarOnEveryIsaAndWidth) {
   const int stride = 48, rows = 3;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (int width = 0; width <= 2 * 16 + 1; ++width) {
       std::vector<uint32_t> color(std::size_t(stride) * rows, 0xABABABABu), color_scalar = color;
       std::vector<float> depth(color.size(), -3.0f), depth_scalar = depth;

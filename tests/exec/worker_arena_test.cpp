@@ -74,7 +74,7 @@ TEST(WorkerArena, NeverLowersAHigherLimitInForce) {
 TEST(WorkerArena, RenderStatsCountTheThreadsThatCouldRun) {
   const Scene scene = small_scene();
   RenderOptions o;
-  o.method = "phong";
+  o.method = ShadingMethod::Phong;
   o.threads = hardware_threads() + 2;
   RenderStats stats;
   render(scene, o, 1, &stats);

@@ -114,8 +114,8 @@ TEST(SegmentSteps, ReachTheHybridKernel) {
   for (const char* file : {"default.json", "torus_local.json"}) {
     const Scene scene = load_scene(std::filesystem::path(FASTSHADE_SOURCE_DIR) / "scenes" / file);
     RenderOptions phong, hybrid;
-    phong.method = "phong";
-    hybrid.method = "hybrid";
+    phong.method = ShadingMethod::Phong;
+    hybrid.method = ShadingMethod::Hybrid;
     const Image p = render(scene, phong), h = render(scene, hybrid);
     ASSERT_EQ(p.rgb.size(), h.rgb.size());
     int differ = 0, worst = 0;
@@ -133,14 +133,14 @@ TEST(SegmentSteps, ReachTheHybridKernel) {
 // where the frame draws no segments.
 TEST(SegmentSteps, TalliedInTheStats) {
   const Scene scene = load_scene(std::filesystem::path(FASTSHADE_SOURCE_DIR) / "scenes" / "default.json");
-  auto stats_for = [&](const char* method) {
+  auto stats_for = [&](ShadingMethod method) {
     RenderOptions o;
     o.method = method;
     Renderer r(scene, o);
     r.render_frame();
     return r.last_stats();
   };
-  const RenderStats hybrid = stats_for("hybrid"), phong = stats_for("phong");
+  const RenderStats hybrid = stats_for(ShadingMethod::Hybrid), phong = stats_for(ShadingMethod::Phong);
   ASSERT_EQ(hybrid.segment_triangles.size(), 5u) << "1, 2, 4, 8 and 16 px";
   long long listed = 0, segmented = 0;
   for (std::size_t m = 0; m < hybrid.segment_triangles.size(); ++m) {
@@ -161,7 +161,7 @@ TEST(SegmentSteps, TalliedInTheStats) {
   // auto with no triangle on its specular path (the threshold above any highlight, every block
   // classified) reports no plan, rather than one of zeros.
   RenderOptions o;
-  o.method = "auto";
+  o.method = ShadingMethod::Auto;
   o.spec_threshold = 1.0;
   o.classify_min_px = 0.0;
   Renderer dull(scene, o);

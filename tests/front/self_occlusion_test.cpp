@@ -99,8 +99,8 @@ TEST(SelfOcclusionTopology, OpenMeshesKeepTheirRimsAndBadOnesDoNotQualify) {
 // Renders `scene` with hidden faces skipped and drawn: the images must be identical.
 RenderStats expect_same_image(const Scene& scene, const std::string& what, const std::string& method = "gouraud") {
   RenderOptions skip, draw;
-  skip.method = draw.method = method;
-  draw.hidden_faces = "draw";
+  skip.method = draw.method = parse_option<ShadingMethod>(method, "method");
+  draw.hidden_faces = HiddenFaces::Draw;
   RenderStats s, d;
   const Image a = render(scene, skip, 1, &s), b = render(scene, draw, 1, &d);
   EXPECT_EQ(d.triangles_hidden, 0) << what;
@@ -175,7 +175,7 @@ TEST(SelfOcclusionFrames, NothingIsCulledWhereTheNearPlaneCutsTheMeshOrTheEyeIsI
 
 TEST(SelfOcclusionFrames, AnUnknownChoiceIsRefused) {
   RenderOptions bad;
-  bad.hidden_faces = "maybe";
+  bad.hidden_faces = static_cast<HiddenFaces>(7);  // outside the enum
   EXPECT_THROW(validate(bad), InputError);
 }
 

@@ -72,8 +72,9 @@ TEST(TriangleFate, LanesMatchScalarOnEveryIsaAndLength) {
   for (int n = 0; n <= 2 * 8 + 1; ++n) lengths.push_back(n);
   lengths.push_back(kFateBlock);
   int kept = 0, back = 0, dropped = 0, culled = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (int round = 0; round < 40; ++round)
       for (int count : lengths)
         for (bool cull_back : {false, true}) {

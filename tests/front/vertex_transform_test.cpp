@@ -58,8 +58,9 @@ TEST(VertexTransform, LanesEqualScalarOnEveryIsa) {
   positions[12].z = -std::numeric_limits<float>::infinity();
   normals[13] = glm::vec3(0.0f);  // a zero normal: NaN after normalising, in both
   int isas = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     ++isas;
     std::vector<std::pair<std::size_t, std::size_t>> runs;  // (first, count)
     for (std::size_t count = 0; count <= 33; ++count) runs.push_back({0, count});

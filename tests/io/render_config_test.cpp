@@ -39,16 +39,16 @@ TEST(RenderConfig, EveryOptionSurvivesARoundTrip) {
   RenderOptions o;
   o.threads = 3;
   o.tile_px = 16;
-  o.method = "auto";
+  o.method = ShadingMethod::Auto;
   o.srgb = true;
-  o.isa = "scalar";
-  o.brdf = "schlick";
+  o.isa = Isa::Scalar;
+  o.brdf = {BrdfKind::Schlick};
   o.max_error = 2.5;
   o.spec_threshold = 1.0 / 255.0;  // not a short decimal: must come back bit for bit
-  o.spec_method = "phong";
-  o.classifier = "paper";
+  o.spec_method = SpecMethod::Phong;
+  o.classifier = ClassifierRule::Paper;
   o.classify_min_px = 12.5;
-  o.hidden_faces = "draw";
+  o.hidden_faces = HiddenFaces::Draw;
   const nlohmann::ordered_json provenance = {{"written_by", "test"}, {"table", {1, 2, 3}}};
   const RenderConfig back = parse(render_config_text(o, all_keys(), provenance));
   EXPECT_EQ(back.options, o) << back.options.to_string() << "\n" << o.to_string();
@@ -59,7 +59,7 @@ TEST(RenderConfig, EveryOptionSurvivesARoundTrip) {
   const RenderConfig partial = parse(render_config_text(o, some, nullptr));
   EXPECT_EQ(partial.keys, some);
   RenderOptions expected;
-  expected.method = "auto";
+  expected.method = ShadingMethod::Auto;
   expected.tile_px = 16;
   EXPECT_EQ(partial.options, expected);
 }
@@ -68,7 +68,7 @@ TEST(RenderConfig, LoadsAFileAndNamesAMissingOne) {
   testing::ScratchDir dir;
   const auto path = dir.write("c.json", R"({"options": {"method": "phong", "tile": 128}})");
   const RenderConfig c = load_render_config(path);
-  EXPECT_EQ(c.options.method, "phong");
+  EXPECT_EQ(c.options.method, ShadingMethod::Phong);
   EXPECT_EQ(c.options.tile_px, 128);
   const std::string missing = (dir.path() / "nope.json").string();
   try {
@@ -108,7 +108,7 @@ TEST(RenderConfig, BadValuesAreRefusedNamingTheKey) {
   EXPECT_PRED2(starts_with, error_of(R"({"options": {"method": "nope"}})"),
                "tuned.json: options.method: unknown method 'nope'");
   EXPECT_EQ(error_of(R"({"options": {"method": "auto", "spec_method": "gouraud"}})"),
-            "tuned.json: options.spec_method: expected hybrid or phong, got 'gouraud'");
+            "tuned.json: options.spec_method: unknown specular method 'gouraud' (expected hybrid or phong)");
   // A key for another method than the file's.
   EXPECT_EQ(error_of(R"({"options": {"method": "phong", "spec_threshold": 0.01}})"),
             "tuned.json: options.spec_threshold: applies to --method auto only");

@@ -28,16 +28,10 @@ std::vector<float> stress_inputs() {
   return c;
 }
 
-std::vector<BrdfChoice> all_choices() {
-  std::vector<BrdfChoice> out;
-  for (const std::string& name : brdf_names()) out.push_back(parse_brdf(name, "test"));
-  return out;
-}
-
 TEST(Brdf, EveryOutputIsFiniteAndInUnitInterval) {
   const std::vector<float> c = stress_inputs();
   std::vector<float> out(c.size());
-  for (const BrdfChoice& choice : all_choices())
+  for (const BrdfChoice& choice : brdf_choices())
     for (double n : kShininess) {
       const BrdfParams p = make_brdf(choice, n);
       for (int lanes = 0; lanes < 2; ++lanes) {
@@ -47,9 +41,9 @@ TEST(Brdf, EveryOutputIsFiniteAndInUnitInterval) {
           eval_brdf_scalar(p, c.data(), out.data(), c.size());
         for (std::size_t i = 0; i < c.size(); ++i) {
           ASSERT_TRUE(std::isfinite(out[i]) && out[i] >= 0.0f && out[i] <= 1.0f)
-              << brdf_name(choice) << " n=" << n << " c=" << c[i] << " -> " << out[i] << " lanes " << lanes;
+              << option_name(choice) << " n=" << n << " c=" << c[i] << " -> " << out[i] << " lanes " << lanes;
           if (!(c[i] > 0)) {
-            ASSERT_EQ(out[i], 0.0f) << brdf_name(choice) << " n=" << n << " c=" << c[i];
+            ASSERT_EQ(out[i], 0.0f) << option_name(choice) << " n=" << n << " c=" << c[i];
           }
         }
       }
@@ -92,7 +86,7 @@ TEST(Brdf, ParsingRejectsUnknownNamesAndBadPowers) {
   EXPECT_THROW(parse_brdf("cosk:9", "--brdf"), InputError);
   EXPECT_THROW(parse_brdf("cosk:", "--brdf"), InputError);
   EXPECT_EQ(parse_brdf("cosk:3", "--brdf").k, 3);
-  for (const std::string& name : brdf_names()) EXPECT_EQ(brdf_name(parse_brdf(name, "x")), name);
+  for (const BrdfChoice& choice : brdf_choices()) EXPECT_EQ(parse_brdf(option_name(choice), "x"), choice);
 }
 
 // Kernels whose arithmetic is the scalar reference's exactly (IEEE +, -, *, / in the same
@@ -114,10 +108,11 @@ TEST(Brdf, SimdEqualsScalarOnEveryIsaAndTailLength) {
   c[3] = 1.0f;
   c[7] = std::numeric_limits<float>::quiet_NaN();
   int isas = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     ++isas;
-    for (const BrdfChoice& choice : all_choices())
+    for (const BrdfChoice& choice : brdf_choices())
       for (double n : {1.0, 37.5, 1e4}) {
         const BrdfParams p = make_brdf(choice, n);
         for (std::size_t start = 0; start < 3; ++start)  // unaligned starts
@@ -128,7 +123,7 @@ TEST(Brdf, SimdEqualsScalarOnEveryIsaAndTailLength) {
             ASSERT_EQ(lanes[len], -7.0f) << "wrote past the end: " << isa;
             for (std::size_t i = 0; i < len; ++i)
               ASSERT_LE(std::fabs(lanes[i] - scalar[i]), tolerance(choice.kind))
-                  << isa << " " << brdf_name(choice) << " n=" << n << " c=" << c[start + i];
+                  << isa << " " << option_name(choice) << " n=" << n << " c=" << c[start + i];
           }
       }
   }

@@ -38,13 +38,14 @@ TEST(VertexLight, LanesMatchVertexColorOnEveryIsaBrdfAndLength) {
   normals[2] = glm::vec3(0, 0, -1);                        // facing away from both lights
   const ShadeConstants k = two_lights();
   int isas = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     ++isas;
-    for (const std::string& brdf : brdf_names())
+    for (const BrdfChoice& brdf : brdf_choices())
       for (double n : {1.0, 37.5, 1000.0}) {
         const MaterialConstants m{glm::vec3(0.7f, 0.6f, 0.5f), glm::vec3(0.5f, 0.4f, 0.6f), float(n), n,
-                                  make_brdf(parse_brdf(brdf, "test"), n)};
+                                  make_brdf(brdf, n)};
         for (bool specular : {true, false})
           for (std::size_t len = 0; len <= 2 * 16 + 1; ++len) {
             std::vector<glm::vec3> lanes(len + 1, glm::vec3(-7.0f)), scalar(len + 1, glm::vec3(-7.0f));
@@ -54,7 +55,7 @@ TEST(VertexLight, LanesMatchVertexColorOnEveryIsaBrdfAndLength) {
             for (std::size_t i = 0; i < len; ++i)
               for (int c = 0; c < 3; ++c) {
                 ASSERT_NEAR(lanes[i][c], scalar[i][c], kTolerance)
-                    << isa << " " << brdf << " n=" << n << " specular " << specular << " vertex " << i;
+                    << isa << " " << option_name(brdf) << " n=" << n << " specular " << specular << " vertex " << i;
                 ASSERT_TRUE(lanes[i][c] >= 0.0f && lanes[i][c] <= 1.0f);
               }
             // Without a BRDF approximation in play, the lanes are the scalar arithmetic exactly.

@@ -46,7 +46,7 @@ def test_local_batch_writes_what_the_command_line_writes(meshes, tmp_path):
     (lambda m, o: fastshade.batch(m, o, size=(0, 10)), "size"),
     (lambda m, o: fastshade.batch(m, o, format="jpg"), "format"),
     (lambda m, o: fastshade.batch(m, o, aovs=("albedo",)), "aovs"),
-    (lambda m, o: fastshade.batch(m, o, method="nope"), "--method"),  # the renderer's own check, as Renderer's
+    (lambda m, o: fastshade.batch(m, o, method="nope"), "method"),
     (lambda m, o: fastshade.batch(m, o, threads=2), "threads"),
     (lambda m, o: fastshade.batch(m, o, threads_per_task=0), "threads_per_task"),
     (lambda m, o: fastshade.batch(m, o, shard=(2, 2)), "shard"),

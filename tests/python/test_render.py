@@ -177,3 +177,13 @@ def test_bad_input_is_an_input_error(make):
         make()
     assert isinstance(error.value, ValueError)
     assert "\n" not in str(error.value) and str(error.value)
+
+
+@pytest.mark.parametrize("keyword, value", [
+    ("method", "nope"), ("isa", "neon"), ("brdf", "cosk:9"), ("normals", "unit"), ("gouraud", "fast"),
+    ("hidden_faces", "maybe"), ("spec_method", "gouraud"), ("classifier", "magic"),
+])
+def test_a_misspelt_option_names_its_keyword(keyword, value):
+    with pytest.raises(fastshade.InputError) as error:
+        fastshade.Renderer(lit_scene(quad_mesh()), **{keyword: value})
+    assert str(error.value).startswith(keyword + ": ") and repr(value) in str(error.value)

@@ -35,8 +35,9 @@ TriangleEdges random_edges(std::mt19937& rng, int64_t extent_fx, bool on_centres
 
 TEST(RowMasks, SimdEqualsScalarOnEveryIsa) {
   int isas = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     ++isas;
     std::mt19937 rng(7);
     // Triangles from a few pixels to the guard band's 2^24 doubled units.
@@ -78,8 +79,9 @@ PixelRect centre_box(const int64_t x[3], const int64_t y[3]) {
 // sub-rectangle shape that fits the ISA's vector.
 TEST(BoxMasks, SimdEqualsScalarOnEveryIsa) {
   int isas = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     ++isas;
     std::mt19937 rng(11);
     std::uniform_int_distribution<int64_t> coord(0, (kBoxExactSpanPx + 1) * kEdgeUnitsPerPixel - 1);

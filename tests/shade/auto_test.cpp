@@ -32,7 +32,7 @@ std::string mesh_scene_json(const std::string& mesh) {
 
 RenderOptions with_method(const std::string& method) {
   RenderOptions o;
-  o.method = method;
+  o.method = parse_option<ShadingMethod>(method, "method");
   o.threads = 2;
   return o;
 }
@@ -101,7 +101,7 @@ TEST(Auto, ZeroThresholdIsExactlyTheSpecularMethod) {
     for (const char* spec_method : {"hybrid", "phong"}) {
       RenderOptions o = with_method("auto");
       o.spec_threshold = 0;
-      o.spec_method = spec_method;
+      o.spec_method = parse_option<SpecMethod>(spec_method, "spec_method");
       RenderStats stats;
       const Image a = render(scene, o, 1, &stats);
       EXPECT_EQ(a.rgb, render(scene, with_method(spec_method)).rgb) << file << " " << spec_method;
@@ -168,10 +168,10 @@ TEST(Auto, OptionsForAutoAreRefusedByOtherMethods) {
   o.spec_threshold = 0.01;
   EXPECT_THROW(validate(o), InputError);
   o = with_method("auto");
-  o.spec_method = "gouraud";
+  o.spec_method = static_cast<SpecMethod>(2);  // outside the enum
   EXPECT_THROW(validate(o), InputError);
   o = with_method("auto");
-  o.classifier = "magic";
+  o.classifier = static_cast<ClassifierRule>(2);
   EXPECT_THROW(validate(o), InputError);
   o = with_method("phong");
   o.classify_min_px = 10;
@@ -190,7 +190,7 @@ TEST(Auto, DenseBlocksTakeTheSpecularPathUnclassified) {
   const Scene scene = load_scene(kScenes / "default.json");
   for (const char* spec_method : {"hybrid", "phong"}) {
     RenderOptions o = with_method("auto");
-    o.spec_method = spec_method;
+    o.spec_method = parse_option<SpecMethod>(spec_method, "spec_method");
     o.classify_min_px = 1e9;
     RenderStats stats;
     const Image a = render(scene, o, 1, &stats);

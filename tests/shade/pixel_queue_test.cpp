@@ -57,12 +57,13 @@ TEST(PixelQueue, LightingMatchesScalarOnEveryIsaBrdfAndLength) {
   c.k.lights.push_back({glm::normalize(glm::vec3(-1, 0.2f, 0.5f)), glm::vec3(0), glm::vec3(0.4f, 0.5f, 0.6f)});
   c.k.lights[1].h_view = glm::normalize(c.k.lights[1].l_view + glm::vec3(0, 0, 1));
   int checked = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
-    for (const std::string& brdf : brdf_names())
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
+    for (const BrdfChoice& brdf : brdf_choices())
       for (bool srgb : {false, true}) {
         c.k.srgb = srgb;
-        c.m = {glm::vec3(0.6f, 0.5f, 0.4f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(parse_brdf(brdf, "test"), 40.0)};
+        c.m = {glm::vec3(0.6f, 0.5f, 0.4f), glm::vec3(0.5f), 40.0f, 40.0, make_brdf(brdf, 40.0)};
         for (int count = 0; count <= 2 * 16 + 1; ++count) {
           PixelQueue lanes;
           fill(lanes, count, rng);
@@ -73,7 +74,7 @@ TEST(PixelQueue, LightingMatchesScalarOnEveryIsaBrdfAndLength) {
           light_pixel_queue(simd, lanes, a.target(), true);
           light_pixel_queue_scalar(scalar, b.target());
           ASSERT_EQ(lanes.count, 0);
-          ASSERT_EQ(a.color, b.color) << isa << " " << brdf << " srgb " << srgb << " count " << count;
+          ASSERT_EQ(a.color, b.color) << isa << " " << option_name(brdf) << " srgb " << srgb << " count " << count;
           ASSERT_EQ(a.depth, c.depth) << "lighting never writes depth";
           ++checked;
         }
@@ -88,8 +89,9 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
   c.k.ambient = glm::vec3(0.1f);
   c.k.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(1, 1, 2.732f)), glm::vec3(1.0f)});
   c.m = {glm::vec3(0.7f), glm::vec3(0.5f), 32.0f, 32.0, make_brdf(parse_brdf("exact", "test"), 32.0)};
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (int count = 0; count <= 2 * 16 + 1; ++count) {
       PixelQueue q;
       fill(q, count, rng);
@@ -150,9 +152,10 @@ TEST(PixelQueue, WholeFramesKeepDrawOrderAgainstReference) {
     ]
   })", "pixel queue order", ".");
   RenderOptions ref_options;
-  ref_options.method = "reference";
+  ref_options.method = ShadingMethod::Reference;
   const ImageF reference = to_float(render(scene, ref_options));
-  for (const auto& [method, bound] : {std::pair{"phong", 1.0}, std::pair{"hybrid", 2.0}, std::pair{"auto", 2.0}})
+  for (const auto& [method, bound] : {std::pair{ShadingMethod::Phong, 1.0}, std::pair{ShadingMethod::Hybrid, 2.0},
+                                     std::pair{ShadingMethod::Auto, 2.0}})
     for (int threads : {1, 2})
       for (int tile : {8, 64, 256}) {
         RenderOptions o;
@@ -160,7 +163,7 @@ TEST(PixelQueue, WholeFramesKeepDrawOrderAgainstReference) {
         o.threads = threads;
         o.tile_px = tile;
         const ImageDiff diff = compare_images(to_float(render(scene, o)), reference);
-        EXPECT_LE(diff.max_abs_lsb, bound) << method << " threads " << threads << " tile " << tile
+        EXPECT_LE(diff.max_abs_lsb, bound) << option_name(method) << " threads " << threads << " tile " << tile
                                            << ": worst at (" << diff.worst_x << ", " << diff.worst_y << ")";
       }
 }

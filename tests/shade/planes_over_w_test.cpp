@@ -17,8 +17,9 @@ bool same_bits(const Plane& a, const Plane& b) { return std::memcmp(&a, &b, size
 
 TEST(PlanesOverW, EqualsMakePlaneOnEveryIsa) {
   int isas = 0;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     ++isas;
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> lambda(-2.0, 2.0), gradient_exp(-12.0, 3.0);

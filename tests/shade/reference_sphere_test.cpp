@@ -42,7 +42,7 @@ TEST(ReferenceShading, FineIcosphereMatchesAnalyticSphereWithinDerivedBound) {
   scene.objects.push_back({std::make_shared<Mesh>(make_icosphere(1.0f, subdivisions)), 0, glm::mat4(1.0f)});
 
   RenderOptions options;
-  options.method = "reference";
+  options.method = ShadingMethod::Reference;
   options.threads = 2;
   const Image image = render(scene, options);
 

@@ -94,8 +94,9 @@ class SpanKernels : public ::testing::Test {
 
 TEST_F(SpanKernels, GouraudMatchesScalarReferenceOnEveryIsa) {
   std::mt19937 rng(11);
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (int trial = 0; trial < 6; ++trial) {
       const Fixture f = random_triangle(rng);
       std::uniform_real_distribution<float> u(0.0f, 1.3f);  // lit vertices may pass 1
@@ -123,13 +124,14 @@ TEST_F(SpanKernels, PhongMatchesScalarReferenceOnEveryIsaBrdfAndViewer) {
   k.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(1, 1, 2.732f)), glm::vec3(0.9f)});
   k.lights.push_back({glm::normalize(glm::vec3(-1, 0.2f, 0.5f)), glm::vec3(0), glm::vec3(0.4f, 0.5f, 0.6f)});
   k.lights[1].h_view = glm::normalize(k.lights[1].l_view + glm::vec3(0, 0, 1));
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
-    for (const std::string& brdf : brdf_names())
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
+    for (const BrdfChoice& brdf : brdf_choices())
       for (bool local : {false, true}) {
         k.local_viewer = local;
         MaterialConstants m{glm::vec3(0.6f, 0.5f, 0.4f), glm::vec3(0.5f), 40.0f, 40.0,
-                            make_brdf(parse_brdf(brdf, "test"), 40.0)};
+                            make_brdf(brdf, 40.0)};
         const Fixture f = random_triangle(rng);
         PhongSpanInput in;
         in.bary = f.bary;
@@ -144,7 +146,7 @@ TEST_F(SpanKernels, PhongMatchesScalarReferenceOnEveryIsaBrdfAndViewer) {
         // The IEEE parts are identical; exp2/log2 and the BRDFs' acos/cos differ by float
         // rounding (FMA or not, Highway's vs the C library's), never by a whole step but for
         // values that sit on a rounding boundary: at most 1 LSB.
-        expect_same("phong " + isa + " " + brdf + (local ? " local" : ""), rng, 1,
+        expect_same("phong " + isa + " " + option_name(brdf) + (local ? " local" : ""), rng, 1,
                     [&](RowTarget r, int x0, int x1) { phong_span(simd, in, 100, x0, x1, r); },
                     [&](RowTarget r, int x0, int x1) { phong_span_scalar(in, 100, x0, x1, r); });
       }
@@ -177,8 +179,9 @@ TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
   std::mt19937 rng(13);
   const OneLight scene;
   int terminator_rows = 0;  // split rows whose N.L changes sign: the per-pixel clamp is exercised
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (int split_light : {-1, 0})
       for (bool specular : {true, false})
       for (int step : {1, 2, 4, 8, 16}) {
@@ -203,9 +206,10 @@ TEST_F(SpanKernels, HybridMatchesScalarReferenceOnEveryIsaAndStep) {
 TEST_F(SpanKernels, NormalsPathsMatchScalarReferenceOnEveryIsa) {
   std::mt19937 rng(14);
   const OneLight scene;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
-    for (SpanNormals mode : {SpanNormals::Adaptive, SpanNormals::EqualAngle})
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
+    for (PhongNormals mode : {PhongNormals::Adaptive, PhongNormals::EqualAngle})
       for (float tol : {0.0f, hybrid_tolerance(2.0)}) {
         const PhongSpanInput in = scene.random_input(rng, -0.8f, 0.3f);
         const HybridRun run{1, 145, 190};
@@ -260,8 +264,9 @@ struct TwoLights {
 TEST_F(SpanKernels, DiffuseQuotientMatchesScalarReferenceOnEveryIsa) {
   std::mt19937 rng(15);
   TwoLights scene;
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (bool srgb : {false, true}) {
       scene.k.srgb = srgb;
       QuotientCase qc = quotient_case(rng, 0.3f, scene.m, scene.k);
@@ -364,10 +369,10 @@ TEST(NormalBlocks, WeightsReproduceSlerpAndNormalisedLerp) {
       const float at160 = plane_at(in.n[c], pixel_offsets(f.bary, 160, f.bary.ay));
       in.n[c].v0 += float(a[c]) - at160;
     }
-    for (SpanNormals mode : {SpanNormals::EqualAngle, SpanNormals::Adaptive}) {
+    for (PhongNormals mode : {PhongNormals::EqualAngle, PhongNormals::Adaptive}) {
       NormalBlock nb;
       // Equal angles are an approximation kept within the budget: any budget, to see them.
-      const float tol = mode == SpanNormals::EqualAngle ? 1e30f : 0.0f;
+      const float tol = mode == PhongNormals::EqualAngle ? 1e30f : 0.0f;
       make_normal_block(in, mode, tol, 160, f.bary.ay, 150, 200, nb);
       const glm::dvec3 na(nb.na[0], nb.na[1], nb.na[2]), nz(nb.nz[0], nb.nz[1], nb.nz[2]);
       for (int i = 0; i < 16; ++i) {
@@ -376,7 +381,7 @@ TEST(NormalBlocks, WeightsReproduceSlerpAndNormalisedLerp) {
         const double psi = std::acos(std::clamp(glm::dot(na, nz), -1.0, 1.0));
         if (psi > 3.0) continue;  // antiparallel: only finiteness is promised
         glm::dvec3 want;
-        if (mode == SpanNormals::EqualAngle && std::sin(psi) > 1e-6)
+        if (mode == PhongNormals::EqualAngle && std::sin(psi) > 1e-6)
           want = (std::sin((16 - i) * psi / 16) * na + std::sin(i * psi / 16) * nz) / std::sin(psi);
         else
           want = glm::normalize((1 - i / 16.0) * na + (i / 16.0) * nz);

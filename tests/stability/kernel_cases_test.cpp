@@ -140,7 +140,7 @@ TEST_F(StabilityKernels, NormalsPathsOver65536PxWithTinyPerPixelAngles) {
   const float tol = hybrid_tolerance(1.0);
   for (double n : {37.5, 1000.0})
     for (double phi : {2e-4, 1e-5, 1e-7})
-      for (SpanNormals mode : {SpanNormals::Adaptive, SpanNormals::EqualAngle}) {
+      for (PhongNormals mode : {PhongNormals::Adaptive, PhongNormals::EqualAngle}) {
         const LongSpan s(n, phi);
         const HybridRun run{1, 0, kSpanPx - 1};
         // With w constant along the row the block's normals are exactly a slerp (equal angle)
@@ -151,7 +151,7 @@ TEST_F(StabilityKernels, NormalsPathsOver65536PxWithTinyPerPixelAngles) {
             s.shade([&](RowTarget r, int x0, int x1) { normals_span(SimdTarget{}, s.in, mode, tol, run, 0, x0, x1, r); });
         const Row scalar =
             s.shade([&](RowTarget r, int x0, int x1) { normals_span_scalar(s.in, mode, tol, run, 0, x0, x1, r); });
-        const std::string kernel = mode == SpanNormals::Adaptive ? "adaptive" : "equal-angle";
+        const std::string kernel = mode == PhongNormals::Adaptive ? "adaptive" : "equal-angle";
         expect_within(span_case(n, phi), "normals_span " + kernel + ", SIMD and scalar",
                       std::max(s.worst_lsb(lanes), s.worst_lsb(scalar)), bound);
       }
@@ -312,8 +312,9 @@ TEST(StabilityFastMath, InverseSquareRootOverTheNormalFloats) {
 // the NaN or infinity 1/sqrt of a subnormal gives.
 TEST_F(StabilityKernels, NormalsTooShortToNormaliseShadeAsZero) {
   const Lighting light(37.5);
-  for (const std::string& isa : available_isas()) {
-    const SimdTarget simd = simd_target(isa);
+  for (const Isa isa_id : available_isas()) {
+    const std::string isa(option_name(isa_id));
+    const SimdTarget simd = simd_target(isa_id);
     for (float tiny : {1e-20f, 3e-23f, 1e-30f, 0.0f}) {
       PhongSpanInput in;
       in.bary = Barycentrics{0, 0, {}, {}, {}};
@@ -330,7 +331,7 @@ TEST_F(StabilityKernels, NormalsTooShortToNormaliseShadeAsZero) {
       Row scalar(64);
       phong_span_scalar(in, 0, 0, 40, scalar.target());
       EXPECT_EQ(scalar.channel(7, 0), ambient) << "scalar " << tiny;
-      for (SpanNormals mode : {SpanNormals::Adaptive, SpanNormals::EqualAngle}) {
+      for (PhongNormals mode : {PhongNormals::Adaptive, PhongNormals::EqualAngle}) {
         Row blocks(64);
         normals_span(simd, in, mode, hybrid_tolerance(1.0), HybridRun{1, 0, 40}, 0, 0, 40, blocks.target());
         EXPECT_EQ(blocks.channel(7, 0), ambient) << isa << " normals " << int(mode) << " " << tiny;

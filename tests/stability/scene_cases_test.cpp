@@ -204,7 +204,7 @@ TEST(StabilityScenes, Slivers2000PxLongAndPointTwoPxSquared) {
   }
   add_object(c.scene, std::move(m));
   RenderOptions o;
-  o.method = "reference";
+  o.method = ShadingMethod::Reference;
   RenderStats stats;
   render(c.scene, o, 1, &stats);
   EXPECT_GT(stats.covered_pixels, 100) << "the slivers must cover pixel centres to test anything";

@@ -146,7 +146,7 @@ inline double float_kernel_lsb(const Scene& scene, const BrdfChoice& brdf = {}) 
 
 inline Bound derive_bound(const MethodConfig& config, const Scene& scene, const CaseGeometry& geo) {
   const RenderOptions& o = config.options;
-  const BrdfChoice brdf = parse_brdf(o.brdf, "stability");
+  const BrdfChoice brdf = o.brdf;
   // The renderer's own fallback decision; only exact cos^n falls back (asking with the exact
   // lobe spares the approximations' fits).
   ShadeConstants k = shade_constants(scene, view_transform(scene));

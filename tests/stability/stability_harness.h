@@ -177,7 +177,7 @@ class TableWriter : public ::testing::Environment {
     auto write = [&](bool brdfs) {
       std::vector<const MethodConfig*> cols;
       for (const MethodConfig& c : method_configs())
-        if ((c.options.brdf != "exact") == brdfs) cols.push_back(&c);
+        if ((c.options.brdf.kind != BrdfKind::Exact) == brdfs) cols.push_back(&c);
       out << "| case |";
       for (const MethodConfig* c : cols) out << " " << c->label << " |";
       out << "\n|---|";

@@ -25,23 +25,11 @@ struct MethodConfig {
   BoundRule rule;
 };
 
-struct ConfigOptions {
-  std::string brdf = "exact";
-  std::string normals = "normalize";
-  double max_error = 1.0;
-  std::string gouraud = "increments";
-};
-
-inline MethodConfig config(std::string label, std::string method, BoundRule rule,
-                           const ConfigOptions& extra = {}) {
-  RenderOptions o;
-  o.threads = 2;  // the CI machine's cores
-  o.method = std::move(method);
-  o.brdf = extra.brdf;
-  o.normals = extra.normals;
-  o.max_error = extra.max_error;
-  o.gouraud = extra.gouraud;
-  return {std::move(label), o, rule};
+// `extra`'s method and threads are set here.
+inline MethodConfig config(std::string label, ShadingMethod method, BoundRule rule, RenderOptions extra = {}) {
+  extra.threads = 2;  // the CI machine's cores
+  extra.method = method;
+  return {std::move(label), extra, rule};
 }
 
 // The one method table. `reference` comes first: the others are compared with it.
@@ -49,21 +37,22 @@ inline const std::vector<MethodConfig>& method_configs() {
   static const std::vector<MethodConfig> configs = [] {
     using R = BoundRule;
     std::vector<MethodConfig> c = {
-        config("reference", "reference", R::Yardstick),
-        config("phong", "phong", R::PerPixelFloat),
-        config("phong --normals adaptive", "phong", R::ErrorBudget, {.normals = "adaptive"}),
-        config("phong --normals equal-angle", "phong", R::ErrorBudget, {.normals = "equal-angle"}),
-        config("gouraud", "gouraud", R::VertexLighting),
-        config("gouraud --gouraud sierpinski", "gouraud", R::VertexLighting, {.gouraud = "sierpinski"}),
-        config("hybrid --max-error 0.5", "hybrid", R::ErrorBudget, {.max_error = 0.5}),
-        config("hybrid --max-error 1", "hybrid", R::ErrorBudget, {.max_error = 1}),
-        config("hybrid --max-error 2", "hybrid", R::ErrorBudget, {.max_error = 2}),
-        config("hybrid --max-error 4", "hybrid", R::ErrorBudget, {.max_error = 4}),
-        config("auto", "auto", R::Classified, {.max_error = 1}),
-        config("auto --max-error 2", "auto", R::Classified, {.max_error = 2}),
+        config("reference", ShadingMethod::Reference, R::Yardstick),
+        config("phong", ShadingMethod::Phong, R::PerPixelFloat),
+        config("phong --normals adaptive", ShadingMethod::Phong, R::ErrorBudget, {.normals = PhongNormals::Adaptive}),
+        config("phong --normals equal-angle", ShadingMethod::Phong, R::ErrorBudget, {.normals = PhongNormals::EqualAngle}),
+        config("gouraud", ShadingMethod::Gouraud, R::VertexLighting),
+        config("gouraud --gouraud sierpinski", ShadingMethod::Gouraud, R::VertexLighting, {.gouraud = GouraudMode::Sierpinski}),
+        config("hybrid --max-error 0.5", ShadingMethod::Hybrid, R::ErrorBudget, {.max_error = 0.5}),
+        config("hybrid --max-error 1", ShadingMethod::Hybrid, R::ErrorBudget, {.max_error = 1}),
+        config("hybrid --max-error 2", ShadingMethod::Hybrid, R::ErrorBudget, {.max_error = 2}),
+        config("hybrid --max-error 4", ShadingMethod::Hybrid, R::ErrorBudget, {.max_error = 4}),
+        config("auto", ShadingMethod::Auto, R::Classified, {.max_error = 1}),
+        config("auto --max-error 2", ShadingMethod::Auto, R::Classified, {.max_error = 2}),
     };
-    for (const std::string& brdf : brdf_names())
-      if (brdf != "exact") c.push_back(config("phong --brdf " + brdf, "phong", R::PerPixelFloat, {.brdf = brdf}));
+    for (const BrdfChoice& brdf : brdf_choices())
+      if (brdf.kind != BrdfKind::Exact)
+        c.push_back(config("phong --brdf " + option_name(brdf), ShadingMethod::Phong, R::PerPixelFloat, {.brdf = brdf}));
     return c;
   }();
   return configs;

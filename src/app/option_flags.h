@@ -1,0 +1,29 @@
+// Command-line flags whose values are typed options (include/fastshade/options.h): the flag
+// reads its text through the option's spelling, and a bad one is the usual InputError naming
+// the flag.
+#pragma once
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "fastshade/options.h"
+
+namespace fastshade {
+
+template <OptionEnum E>
+CLI::Option* add_option_flag(CLI::App* app, const std::string& flag, E& target, const std::string& help) {
+  return app
+      ->add_option_function<std::string>(
+          flag, [&target, flag](const std::string& text) { target = parse_option<E>(text, flag); }, help)
+      ->type_name("NAME");
+}
+
+inline CLI::Option* add_option_flag(CLI::App* app, const std::string& flag, BrdfChoice& target,
+                                    const std::string& help) {
+  return app
+      ->add_option_function<std::string>(
+          flag, [&target, flag](const std::string& text) { target = parse_brdf(text, flag); }, help)
+      ->type_name("BRDF");
+}
+
+}  // namespace fastshade
