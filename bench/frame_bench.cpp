@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "exec/frame_timing.h"
+#include "fastshade/profile.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"
 

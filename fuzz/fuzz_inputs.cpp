@@ -11,7 +11,7 @@
 #include "fastshade/error.h"
 #include "fastshade/mesh.h"
 #include "fastshade/scene.h"
-#include "io/render_config.h"
+#include "fastshade/render_config.h"
 
 namespace fastshade::fuzz {
 

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/median.h"
+#include "fastshade/profile.h"
 #include "egl_context.h"
 #include "fastshade/compare.h"
 #include "fastshade/error.h"

@@ -5,6 +5,8 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -70,6 +72,35 @@ std::vector<std::string> render_mesh_job(const BatchSpec& spec, const MeshJob& j
 // The "failed" results lines of every image of a job whose render never reported (a Ray task
 // that failed, a worker that died), each with `error`.
 std::vector<std::string> failed_job_lines(const BatchSpec& spec, const MeshJob& job, const std::string& error);
+
+// What a batch on this machine reports back while it runs, each from any worker thread (both
+// optional).
+struct BatchCallbacks {
+  std::function<void(bool ok, const std::string& what)> image_done;  // "KEY view V: 12.3 ms"
+  std::function<bool()> stop_requested;  // polled before each load and image: true stops
+};
+struct BatchOutcome {
+  std::size_t ok = 0, failed = 0;
+  std::map<std::string, std::string> failures;  // mesh key -> its first error
+  std::string fatal;  // results.jsonl could not be written: the batch stopped
+  int threads = 0;    // workers used
+};
+// Runs a plan on this machine: records its skipped lines, then renders every job on
+// spec.options.threads workers (0: all cores), each render with the same number of threads.
+// Workers take views of loaded meshes first, else load the next mesh in plan order (the
+// largest first), so one mesh's views spread over all workers and small meshes load around
+// a large one. A mesh that fails to load fails all its images, an image that fails fails
+// alone; both are recorded and the batch goes on. Throws InputError if results.jsonl cannot be
+// opened.
+BatchOutcome render_batch(const BatchSpec& spec, const BatchPlan& plan, const BatchCallbacks& callbacks = {});
+
+// The part I (from 0) of N that BatchSpec's shard_index and shard_count name, from "I/N" (the
+// command line's --shard). Throws InputError naming `where` unless 0 <= I < N <= kMaxShards.
+struct Shard {
+  int index = 0, count = 1;
+};
+inline constexpr int kMaxShards = 1000000;  // far above any cluster; keeps I and N in an int
+Shard parse_shard(const std::string& text, const std::string& where = "--shard");
 
 // Appends results lines to OUTDIR/results.jsonl, each whole (docs/BATCH.md, "Results").
 void append_batch_results(const std::filesystem::path& outdir, const std::vector<std::string>& lines);

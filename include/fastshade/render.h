@@ -21,7 +21,7 @@ struct PathStats {
   long long triangles = 0, pixels = 0;
 };
 
-// Internal: per-item costs for the load-balance model (src/exec/frame_profile.h).
+// Per-item costs of a frame, for load-balance studies (include/fastshade/profile.h).
 struct FrameProfile;
 
 struct RenderStats {
@@ -62,8 +62,8 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // One frame; `times` receives this frame's stage times. A non-null `profile` (internal, for
-  // `fastshade bench scaling`) receives every parallel item's cost; null costs nothing.
+  // One frame; `times` receives this frame's stage times. A non-null `profile` (include/
+  // fastshade/profile.h) receives every parallel item's cost; null costs nothing.
   Image render_frame(StageTimes* times = nullptr, FrameProfile* profile = nullptr);
   // The same into `into`, whose buffer is reused when it has the frame's size: what timed
   // loops call, so that frames after the first allocate and clear nothing.

@@ -1,5 +1,6 @@
 // fastshade batch: checks the options, finds the meshes, plans the images (skipping those an
-// earlier run completed), hands them to the workers (batch_work.h) and sums up (docs/BATCH.md).
+// earlier run completed), hands them to the library's workers (render_batch) with a progress
+// bar and the stop signals, and sums up (docs/BATCH.md).
 #include <malloc.h>
 #include <unistd.h>
 
@@ -9,17 +10,12 @@
 #include <cstdio>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "app/batch_progress.h"
-#include "app/batch_work.h"
 #include "app/commands.h"
 #include "app/stop_signals.h"
-#include "batch/batch_inputs.h"
-#include "batch/batch_plan.h"
-#include "batch/batch_results.h"
+#include "fastshade/aov_list.h"
+#include "fastshade/batch.h"
 #include "fastshade/error.h"
-#include "io/aov_list.h"
 
 namespace fastshade {
 
@@ -83,19 +79,18 @@ int run_batch(const BatchCommand& cmd) {
   spec.format = cmd.format;
   spec.aovs = cmd.aov.empty() ? AovSet{} : parse_aov_list(cmd.aov);
   spec.options = cmd.options;
-  const PreparedBatch prepared = prepare_batch(spec);
-  const BatchPlan& plan = prepared.plan;
+  const BatchPlan plan = plan_batch(spec);
 
-  ResultsLog log(spec.outdir / "results.jsonl");
   BatchProgress progress(plan.to_render, ::isatty(STDERR_FILENO) == 1);
-  for (const std::string& line : plan.skipped) log.append(nlohmann::json::parse(line));
 
   keep_freed_memory();
   const Clock::time_point start = Clock::now();
   BatchOutcome outcome;
   {
     const StopSignals signals;
-    outcome = render_jobs(plan.jobs, BatchSetup{{prepared.scene, spec.options, spec.aovs, spec.outdir, spec.views}, log, progress});
+    outcome = render_batch(spec, plan,
+                           {.image_done = [&](bool ok, const std::string& what) { progress.image_done(ok, what); },
+                            .stop_requested = [] { return StopSignals::received() != 0; }});
   }
   progress.finish();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

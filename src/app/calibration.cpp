@@ -14,7 +14,7 @@
 #include "app/timing_rounds.h"
 #include "app/tune_rule.h"
 #include "fastshade/error.h"
-#include "io/render_config.h"
+#include "fastshade/render_config.h"
 
 namespace fastshade {
 

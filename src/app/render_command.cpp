@@ -3,13 +3,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/aov_list.h"
+#include "fastshade/aov_list.h"
 #include "app/calibration.h"
 #include "app/commands.h"
 #include "fastshade/error.h"
 #include "fastshade/image.h"
 #include "fastshade/scene.h"
-#include "io/atomic_file.h"
+#include "fastshade/atomic_file.h"
 
 namespace fastshade {
 

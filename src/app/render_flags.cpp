@@ -7,7 +7,7 @@
 #include "app/calibration.h"
 #include "app/commands.h"
 #include "fastshade/error.h"
-#include "io/render_config.h"
+#include "fastshade/render_config.h"
 
 namespace fastshade {
 

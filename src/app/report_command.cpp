@@ -18,7 +18,7 @@
 #include "app/report_scenes.h"
 #include "app/timing_rounds.h"
 #include "fastshade/error.h"
-#include "io/atomic_file.h"
+#include "fastshade/atomic_file.h"
 
 extern char** environ;
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "exec/schedule_model.h"
+#include "fastshade/profile.h"
 #include "fastshade/render.h"
 
 namespace fastshade {

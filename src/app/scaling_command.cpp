@@ -17,12 +17,10 @@
 
 #include "app/commands.h"
 #include "app/scaling.h"
-#include "core/limits.h"
-#include "exec/frame_profile.h"
-#include "exec/frame_timing.h"
+#include "fastshade/atomic_file.h"
 #include "fastshade/error.h"
+#include "fastshade/profile.h"
 #include "fastshade/scene.h"
-#include "io/atomic_file.h"
 
 namespace fastshade {
 
@@ -43,11 +41,16 @@ std::vector<int> parse_tiles(const std::string& text) {
     const char* last = text.data() + comma;
     int px = 0;
     const auto [end, ec] = std::from_chars(first, last, px);
-    if (ec != std::errc() || end != last || px < limits::kMinTilePx || px > limits::kMaxTilePx ||
-        (px & (px - 1)) != 0)
-      throw InputError("--tiles", "expected powers of two from " + std::to_string(limits::kMinTilePx) +
-                                      " to " + std::to_string(limits::kMaxTilePx) +
-                                      " separated by commas, got '" + text + "'");
+    if (ec != std::errc() || end != last || px == 0)
+      throw InputError("--tiles", "expected tile sizes separated by commas, got '" + text + "'");
+    RenderOptions probe;  // the renderer's own check says what a tile size may be
+    probe.tile_px = px;
+    try {
+      validate(probe);
+    } catch (const InputError& e) {  // "--tile: expected ..."
+      const std::string message = e.what();
+      throw InputError("--tiles", message.substr(message.find(": ") + 2));
+    }
     tiles.insert(px);
     pos = comma + 1;
   }

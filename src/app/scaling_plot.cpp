@@ -7,7 +7,7 @@
 
 #include "app/scaling.h"
 #include "fastshade/error.h"
-#include "io/atomic_file.h"
+#include "fastshade/atomic_file.h"
 
 namespace fastshade {
 

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include "app/scaling.h"
-#include "core/limits.h"
 
 namespace fastshade {
 
@@ -227,8 +226,8 @@ void print_scaling_tables(const ScalingRun& run) {
     for (const SchedulePrediction& p : m.predictions) std::printf(" %7.2f", one / p.total_ms);
     std::printf("| %6.2fms %6.2fms %5.1fx\n", m.serial_ms, m.critical_path_ms, one / m.critical_path_ms);
   }
-  std::printf("serial: phases of one item (between stages; the bin plan up to %d tiles); critical: "
-              "largest item of every phase; bound: model P=1 / critical\n\n", limits::kBinPlanTiles);
+  std::printf("serial: phases of one item (between stages; the bin plan of a small grid); critical: "
+              "largest item of every phase; bound: model P=1 / critical\n\n");
 
   std::printf("1-thread item costs per phase as the model takes them (hand-out overheads spread "
               "in), ms: sum (largest item)\n%4s |", "tile");

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "app/progress.h"
-#include "core/median.h"
+#include "fastshade/profile.h"
 #include "fastshade/image.h"
 #include "fastshade/render.h"
 #include "fastshade/scene.h"

@@ -18,8 +18,8 @@
 #include "app/tune_grid.h"
 #include "app/tune_output.h"
 #include "fastshade/error.h"
-#include "io/atomic_file.h"
-#include "io/render_config.h"
+#include "fastshade/atomic_file.h"
+#include "fastshade/render_config.h"
 
 namespace fastshade {
 

@@ -159,9 +159,9 @@ std::vector<BatchMesh> find_meshes(const std::vector<std::string>& inputs) {
   return unique;
 }
 
-Shard parse_shard(const std::string& text) {
+Shard parse_shard(const std::string& text, const std::string& where) {
   const auto bad = [&] {
-    return InputError("--shard", "expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards) +
+    return InputError(where, "expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards) +
                                      " (I counts from 0), got '" + text + "'");
   };
   const std::size_t slash = text.find('/');

@@ -21,14 +21,6 @@ namespace fastshade {
 // argument that is none of these, no mesh at all, or two keys whose names collide.
 std::vector<BatchMesh> find_meshes(const std::vector<std::string>& inputs);
 
-// --shard I/N: the I-th (counting from 0) of N parts.
-struct Shard {
-  int index = 0, count = 1;
-};
-// Throws InputError("--shard", ...) unless the text is "I/N" with 0 <= I < N <= kMaxShards.
-Shard parse_shard(const std::string& text);
-inline constexpr int kMaxShards = 1000000;  // far above any cluster; keeps I and N in an int
-
 // The meshes of one shard: the j-th mesh of the sorted list goes to shard j mod N (round
 // robin, so that each shard gets a similar mix of directories). The shards partition the list.
 std::vector<BatchMesh> take_shard(const std::vector<BatchMesh>& meshes, Shard shard);

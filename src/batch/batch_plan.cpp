@@ -14,8 +14,8 @@
 #include "batch/batch_view.h"
 #include "core/ms_between.h"
 #include "fastshade/error.h"
-#include "io/aov_list.h"
-#include "io/atomic_file.h"
+#include "fastshade/aov_list.h"
+#include "fastshade/atomic_file.h"
 #include "io/scene_file.h"
 
 namespace fastshade {

@@ -2,8 +2,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/median.h"
-#include "exec/frame_timing.h"
+#include "fastshade/profile.h"
 #include "fastshade/render.h"
 
 namespace fastshade {

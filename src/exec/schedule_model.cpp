@@ -1,4 +1,4 @@
-#include "exec/schedule_model.h"
+#include "fastshade/profile.h"
 
 #include <algorithm>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "io/aov_list.h"
+#include "fastshade/aov_list.h"
 
 #include <sstream>
 

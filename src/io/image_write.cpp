@@ -18,7 +18,7 @@
 
 #include "fastshade/error.h"
 #include "fastshade/image.h"
-#include "io/atomic_file.h"
+#include "fastshade/atomic_file.h"
 #include "io/oiio_error.h"
 
 namespace fastshade {

@@ -1,4 +1,4 @@
-#include "io/render_config.h"
+#include "fastshade/render_config.h"
 
 #include <algorithm>
 #include <cstdint>

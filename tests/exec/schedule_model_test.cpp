@@ -6,7 +6,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "exec/schedule_model.h"
+#include "fastshade/profile.h"
 
 namespace fastshade {
 namespace {

@@ -1,5 +1,5 @@
 // Temporary files: a TempFile's name leads back to its target, and nothing else does.
-#include "io/atomic_file.h"
+#include "fastshade/atomic_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Config files for `render --config`: every option survives a round trip, and a bad file is
 // refused as strictly as a scene file, naming the file and the key.
-#include "io/render_config.h"
+#include "fastshade/render_config.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
-// Renders the embedded default scene through the installed public API and checks the image:
-// the right size, and objects drawn over the background (pixels unlike the corner's).
+// Renders the embedded default scene through the installed public API with typed options, one
+// of them read from its spelling, and checks the image: the right size, and objects drawn over
+// the background (pixels unlike the corner's).
 #include <cstdio>
 
 #include <fastshade/render.h>
@@ -9,6 +10,8 @@ int main() {
   const fastshade::Scene scene = fastshade::parse_scene(fastshade::default_scene_json(), "default scene", ".");
   fastshade::RenderOptions options;
   options.threads = 2;
+  options.method = fastshade::ShadingMethod::Phong;
+  options.brdf = fastshade::parse_brdf("cosk:3", "brdf");
   const fastshade::Image image = fastshade::render(scene, options);
   if (image.width != scene.width || image.height != scene.height ||
       image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {

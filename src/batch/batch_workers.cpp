@@ -1,4 +1,4 @@
-#include "app/batch_work.h"
+#include "batch/batch_workers.h"
 
 #include <atomic>
 #include <chrono>
@@ -13,7 +13,7 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
-#include "app/stop_signals.h"
+#include "batch/batch_plan.h"
 #include "core/ms_between.h"
 #include "fastshade/image.h"
 #include "fastshade/mesh.h"
@@ -77,7 +77,9 @@ class Workers {
     const MeshJob* job = nullptr;  // to load
   };
 
-  bool stopping() const { return stop_.load() || StopSignals::received() != 0; }
+  bool stopping() const {
+    return stop_.load() || (setup_.callbacks.stop_requested && setup_.callbacks.stop_requested());
+  }
 
   Work take_work() {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -133,7 +135,8 @@ class Workers {
     }
     char ms[32];
     std::snprintf(ms, sizeof ms, ": %.1f ms", line["time_ms"].get<double>());
-    setup_.progress.image_done(true, job.mesh.key + " view " + std::to_string(image.view) + ms);
+    if (setup_.callbacks.image_done)
+      setup_.callbacks.image_done(true, job.mesh.key + " view " + std::to_string(image.view) + ms);
   }
 
   void failed(const BatchMesh& mesh, const BatchImage& image, const std::string& error,
@@ -144,7 +147,8 @@ class Workers {
       ++outcome_.failed;
       outcome_.failures.emplace(mesh.key, error);
     }
-    setup_.progress.image_done(false, mesh.key + " view " + std::to_string(image.view) + ": " + error);
+    if (setup_.callbacks.image_done)
+      setup_.callbacks.image_done(false, mesh.key + " view " + std::to_string(image.view) + ": " + error);
   }
 
   const std::vector<MeshJob>& jobs_;
@@ -187,6 +191,13 @@ BatchOutcome render_jobs(const std::vector<MeshJob>& jobs, const BatchSetup& set
   BatchOutcome outcome = workers.outcome();
   outcome.threads = threads;
   return outcome;
+}
+
+BatchOutcome render_batch(const BatchSpec& spec, const BatchPlan& plan, const BatchCallbacks& callbacks) {
+  const SceneTemplate scene = batch_template(spec);
+  ResultsLog log(spec.outdir / "results.jsonl");
+  for (const std::string& line : plan.skipped) log.append(nlohmann::json::parse(line));
+  return render_jobs(plan.jobs, BatchSetup{{scene, spec.options, spec.aovs, spec.outdir, spec.views}, log, callbacks});
 }
 
 }  // namespace fastshade

@@ -1,5 +1,5 @@
-// The command line's AOV list ("depth,normal,triangle_id,object_id", or "all") as the
-// library's AovSet: the one place the names are parsed (render --aov, batch --aov).
+// An AOV list as text ("depth,normal,triangle_id,object_id", or "all") and as an AovSet: the
+// one place the names are read (render --aov, batch --aov, batch results and fingerprints).
 #pragma once
 #include <string>
 

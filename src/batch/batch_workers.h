@@ -1,34 +1,20 @@
-// The working part of fastshade batch: meshes loaded and their views rendered on N workers,
-// every finished image written whole and recorded in results.jsonl.
+// A batch's pool of workers (render_batch in include/fastshade/batch.h): meshes loaded and
+// their views rendered on N workers, every finished image written whole and recorded in
+// results.jsonl.
 #pragma once
-#include <cstddef>
-#include <filesystem>
-#include <map>
-#include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "batch/batch_inputs.h"
-#include "app/batch_progress.h"
 #include "batch/batch_results.h"
-#include "fastshade/render.h"
 #include "batch/batch_view.h"
+#include "fastshade/batch.h"
 
 namespace fastshade {
 
-// What the workers share: read-only, or (log, progress) thread-safe.
+// What the workers share: read-only, or (log, the callbacks) thread-safe.
 struct BatchSetup {
   BatchContext context;  // context.options.threads: the number of workers, 0 = all cores
   ResultsLog& log;
-  BatchProgress& progress;
-};
-
-struct BatchOutcome {
-  std::size_t ok = 0, failed = 0;
-  std::map<std::string, std::string> failures;  // mesh key -> its first error
-  std::string fatal;  // results.jsonl could not be written: the batch stopped
-  int threads = 0;    // workers used
+  const BatchCallbacks& callbacks;
 };
 
 // Renders every job's images. Workers take views of loaded meshes first, else load the next
@@ -37,8 +23,8 @@ struct BatchOutcome {
 // views spread over all workers. Each render has options.threads threads, so a worker with
 // nothing left to take helps with the tiles of the others' renders. A mesh that fails to
 // load fails all its images; an image that fails to render or write fails alone; both are
-// recorded and the batch goes on. Stops taking work on SIGINT/SIGTERM (StopSignals) and
-// leaves no partial file: an image is written to a temp file and renamed, then recorded.
+// recorded and the batch goes on. Stops taking work once callbacks.stop_requested() says so,
+// and leaves no partial file: an image is written to a temp file and renamed, then recorded.
 BatchOutcome render_jobs(const std::vector<MeshJob>& jobs, const BatchSetup& setup);
 
 }  // namespace fastshade
