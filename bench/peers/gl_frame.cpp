@@ -75,7 +75,7 @@ GLuint renderbuffer(GLenum format, int width, int height) {
 
 }  // namespace
 
-GlFrame::GlFrame(const Scene& scene, bool phong)
+GlFrame::GlFrame(const Scene& scene, bool phong, bool cull_back)
     : width_(scene.width), height_(scene.height) {
   // fastshade's own front-end inputs: the geometry it rasterises, its camera matrices and its
   // view-space lights and materials (no sRGB, exact BRDF: the `phong` and `reference` setting).
@@ -155,7 +155,7 @@ GlFrame::GlFrame(const Scene& scene, bool phong)
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   // fastshade culls what is clockwise on screen: GL's default front face (CCW, y up).
-  if (scene.cull == fastshade::Cull::Back) glEnable(GL_CULL_FACE);
+  if (scene.cull == fastshade::Cull::Back || cull_back) glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glFrontFace(GL_CCW);
   // The background as fastshade quantises it, so that the clear stores the same bytes.

@@ -13,10 +13,11 @@ namespace peer {
 
 class GlFrame {
  public:
-  // Needs a current GL 3.3 context. `phong` false = gouraud. Output is linear (fastshade
+  // Needs a current GL 3.3 context. `phong` false = gouraud. `cull_back`: GL culls back faces
+  // (as pyrender does by default) even where the scene does not. Output is linear (fastshade
   // without --srgb). Throws std::runtime_error on a shader or framebuffer error or a scene
   // with more lights than the shaders take.
-  GlFrame(const fastshade::Scene& scene, bool phong);
+  GlFrame(const fastshade::Scene& scene, bool phong, bool cull_back);
   ~GlFrame();
   GlFrame(const GlFrame&) = delete;
   GlFrame& operator=(const GlFrame&) = delete;
