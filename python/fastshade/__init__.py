@@ -15,23 +15,28 @@ Every bad input raises fastshade.InputError (a ValueError) with the command line
 """
 from __future__ import annotations
 
+import inspect
 import json
 from dataclasses import dataclass, field
+from typing import Literal
 
 import numpy as np
 
 from ._fastshade import Camera, InputError, Material, Mesh, Scene, _methods, _Renderer, load_mesh
 
-__all__ = ["AOVS", "Camera", "Frame", "InputError", "batch", "Material", "Mesh", "Renderer", "Scene", "load_mesh", "methods", "render"]
+__all__ = ["AOVS", "Camera", "Classifier", "Frame", "GouraudMode", "HiddenFaces", "InputError", "Isa", "Material", "Mesh",
+           "Method", "Normals", "Renderer", "Scene", "SpecMethod", "batch", "load_mesh", "methods", "render"]
 
 
-# Every render option with its default, in the order the module takes them (README.md's
-# `render` flags, Python-named).
-_OPTIONS = {
-    "threads": 0, "method": "auto", "max_error": 1.0, "tile": 64, "isa": "best", "srgb": False,
-    "brdf": "exact", "normals": "normalize", "gouraud": "increments", "hidden_faces": "skip",
-    "spec_threshold": 1.0 / 510.0, "spec_method": "hybrid", "classifier": "bound", "classify_min_px": 80.0,
-}
+# The spellings of the render options that name a choice: the library's own
+# (include/fastshade/options.h; tests/python/test_render.py checks they agree).
+Method = Literal["auto", "reference", "phong", "hybrid", "gouraud"]
+Isa = Literal["scalar", "sse4", "avx2", "avx512", "best"]
+Normals = Literal["normalize", "adaptive", "equal-angle"]
+GouraudMode = Literal["increments", "sierpinski"]
+HiddenFaces = Literal["skip", "draw"]
+SpecMethod = Literal["hybrid", "phong"]
+Classifier = Literal["bound", "paper"]
 
 
 # The outputs a render can return beside colour (docs/PYTHON.md, "Outputs").
@@ -88,16 +93,27 @@ def _aov_flags(aovs) -> tuple[bool, bool, bool, bool]:
 class Renderer:
     """Renders one scene with fixed options, keeping its buffers between frames.
 
-    The options are the command line's (docs/KERNELS.md, README.md): method ("auto", "reference",
-    "phong", "hybrid", "gouraud"), max_error (8-bit steps), threads (0: all), tile (pixels, a power
-    of two in [8, 256], or 0: sized from the image), isa ("scalar", "sse4", "avx2", "avx512",
-    "best": this renderer's own), srgb, brdf, normals, gouraud, hidden_faces, spec_threshold,
-    spec_method, classifier, classify_min_px. The scene is copied: changing it later changes
-    nothing here. The GIL is released while a frame renders.
+    The options are the command line's `render` flags, Python-named (docs/PIPELINE.md,
+    docs/KERNELS.md): threads (0: all cores), method (fastshade.methods() says what each does),
+    max_error (the error budget of auto, hybrid and normals="adaptive", in 8-bit steps), tile
+    (pixels, a power of two in [8, 256], or 0: sized from the image), isa (this renderer's own
+    SIMD target), srgb (encode with the sRGB curve), brdf ("exact", "cosk:K" with K in 1..8,
+    "schlick", "schlick-pow2", "quadratic", "quadratic-fit", "poly2", "poly3"), normals
+    (phong's per-pixel normals), gouraud ("sierpinski" splits large triangles), hidden_faces
+    ("skip" culls back faces a closed mesh provably hides), and auto's spec_threshold,
+    spec_method, classifier and classify_min_px. An unknown option or a bad value raises
+    InputError naming it. The scene is copied: changing it later changes nothing here. The GIL
+    is released while a frame renders.
     """
 
-    def __init__(self, scene: Scene, **options):
-        self._renderer = _Renderer(scene, _checked_options(options))
+    def __init__(self, scene: Scene, *, threads: int = 0, method: Method = "auto", max_error: float = 1.0,
+                 tile: int = 64, isa: Isa = "best", srgb: bool = False, brdf: str = "exact",
+                 normals: Normals = "normalize", gouraud: GouraudMode = "increments",
+                 hidden_faces: HiddenFaces = "skip", spec_threshold: float = 1.0 / 510.0,
+                 spec_method: SpecMethod = "hybrid", classifier: Classifier = "bound",
+                 classify_min_px: float = 80.0, **unknown):
+        options = {name: value for name, value in locals().items() if name in _OPTIONS}
+        self._renderer = _Renderer(scene, _checked_options(dict(options, **unknown)))
 
     def render(self, aovs=("color",)) -> Frame:
         """One frame with the outputs `aovs` names (of fastshade.AOVS; colour always comes).
@@ -110,8 +126,13 @@ class Renderer:
                      triangle_id=triangle_id, object_id=object_id)
 
 
+# Every render option with its default, in Renderer's order: its keyword-only parameters.
+_OPTIONS = {p.name: p.default for p in inspect.signature(Renderer.__init__).parameters.values()
+            if p.kind is inspect.Parameter.KEYWORD_ONLY}
+
+
 def render(scene: Scene, aovs=("color",), **options) -> Frame:
-    """Renderer(scene, **options).render(aovs) in one call."""
+    """Renderer(scene, **options).render(aovs) in one call; the options are Renderer's."""
     return Renderer(scene, **options).render(aovs)
 
 

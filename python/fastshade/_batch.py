@@ -4,7 +4,12 @@ from __future__ import annotations
 import json
 import os
 
+from typing import TYPE_CHECKING
+
 from ._fastshade import InputError, _batch_failed, _batch_plan, _batch_record, _batch_render_mesh
+
+if TYPE_CHECKING:
+    from . import Method
 
 ENGINES = ("local", "ray")
 
@@ -40,7 +45,7 @@ def _ray_lines(spec: dict, jobs: list[dict], address: str | None, num_cpus: int,
         record(lines)
 
 
-def batch(inputs, out_dir, size=(256, 256), views=1, scene=None, method="auto", aovs=("color",),
+def batch(inputs, out_dir, size=(256, 256), views=1, scene=None, method: Method = "auto", aovs=("color",),
           engine="local", address=None, threads_per_task=None, format="png", shard=(0, 1), **options) -> list[dict]:
     """Renders every mesh of `inputs` (files, directories searched recursively, list files) as
     `fastshade batch` does (docs/BATCH.md) and returns one dict per image: the keys of a

@@ -1,8 +1,10 @@
 """The Python module: numpy in and out, scenes in code and from files, cameras, errors."""
+import inspect
 import os
 import pathlib
 import re
 import threading
+import typing
 
 import numpy as np
 import pytest
@@ -187,3 +189,22 @@ def test_a_misspelt_option_names_its_keyword(keyword, value):
     with pytest.raises(fastshade.InputError) as error:
         fastshade.Renderer(lit_scene(quad_mesh()), **{keyword: value})
     assert str(error.value).startswith(keyword + ": ") and repr(value) in str(error.value)
+
+
+def test_the_spellings_renderer_declares_are_the_library_s():
+    hints = typing.get_type_hints(fastshade.Renderer.__init__)
+    choices = {name: typing.get_args(hint) for name, hint in hints.items() if typing.get_origin(hint) is typing.Literal}
+    assert set(choices) == {"method", "isa", "normals", "gouraud", "hidden_faces", "spec_method", "classifier"}
+    for name, spellings in choices.items():
+        with pytest.raises(fastshade.InputError) as error:
+            fastshade.Renderer(lit_scene(quad_mesh()), **{name: "?"})
+        accepted = str(error.value).split("(expected ")[1].rstrip(")")  # "a, b or c"
+        assert accepted.replace(" or ", ", ").split(", ") == list(spellings), name
+
+
+def test_renderer_keywords_are_every_option_with_its_default():
+    renderer = fastshade.Renderer(lit_scene(quad_mesh()), method="phong", tile=32)
+    assert renderer.render().stats["method"] == "phong" and renderer.render().stats["tile"] == 32
+    defaults = {name: p.default for name, p in inspect.signature(fastshade.Renderer).parameters.items()
+                if p.kind is inspect.Parameter.KEYWORD_ONLY}
+    assert defaults["method"] == "auto" and defaults["tile"] == 64 and len(defaults) == 14
