@@ -25,7 +25,7 @@ struct ScalingPoint {
   std::vector<SchedulePhase> phases;
 };
 
-// The load-balance model for one tile size (exec/schedule_model.h).
+// The load-balance model for one tile size (include/fastshade/profile.h).
 struct ScalingModel {
   int tile_px = 0;
   std::size_t tiles = 0, chunks = 0;  // items of the largest phases
