@@ -60,7 +60,7 @@ void size_aovs(const AovSet& which, AovImages& out, int width, int height) {
 }  // namespace
 
 struct Renderer::Impl {
-  RenderOptions choices;
+  RenderOptions options;  // checked (exec/resolve_options.h)
   SceneGeometry geometry;
   const Method* method;
   ViewTransform xf;
@@ -79,12 +79,12 @@ struct Renderer::Impl {
   AovFrame aov;  // aov.which: what the front end was last set up for
 
   Impl(const Scene& scene, const RenderOptions& o, const ResolvedOptions& resolved)
-      : choices(resolved.options),
+      : options(resolved.options),
         geometry(flatten_scene(scene)),
         method(resolved.method),
         xf(view_transform(scene)),
         arena(o.threads) {
-    const RenderOptions& c = choices;
+    const RenderOptions& c = options;
     frame.simd = resolved.simd;
     setup.simd = frame.simd;
     frame.grid = make_grid(scene.width, scene.height,
@@ -199,7 +199,7 @@ struct Renderer::Impl {
     });
     stats.threads = arena.threads_available();
     count_frame({geometry, frame, back_end, objects_culled, method->classifies, classified,
-                 choices.classify_min_px, setup.segment_steps},
+                 options.classify_min_px, setup.segment_steps},
                 stats);
     if (times) *times = t;
   }

@@ -1,8 +1,7 @@
-// RenderOptions, checked and parsed once: the method they name and their typed choices
-// (frame/render_choices.h). validate() is resolve() with the result dropped.
+// RenderOptions, checked once: the method they name, the SIMD target, and the options as the
+// layers below read them. validate() is resolve() with the result dropped.
 #pragma once
 #include "core/simd_target.h"
-#include "fastshade/render.h"
 #include "fastshade/options.h"
 #include "shade/method.h"
 

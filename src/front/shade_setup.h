@@ -9,6 +9,6 @@
 
 namespace fastshade {
 
-ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, const RenderOptions& choices = {});
+ShadeConstants shade_constants(const Scene& scene, const ViewTransform& xf, const RenderOptions& options = {});
 
 }  // namespace fastshade

@@ -50,9 +50,9 @@ struct Method {
   std::string_view summary;
   AttrNeeds (*needs)(const ShadeConstants& shade);
   // Chooses the variant for this frame (ISA, viewer, sRGB...): decided once, outside loops.
-  TileDraw (*select)(SimdTarget simd, const ShadeConstants& shade, const RenderOptions& choices);
-  // Why these choices make no sense with this method ("--brdf: ..."), or "" if they do.
-  std::string (*refuse)(const RenderOptions& choices);
+  TileDraw (*select)(SimdTarget simd, const ShadeConstants& shade, const RenderOptions& options);
+  // Why these options make no sense with this method ("--brdf: ..."), or "" if they do.
+  std::string (*refuse)(const RenderOptions& options);
   // Whether the front end classifies triangles into shading paths for this method (and the
   // classifier's options apply).
   bool classifies;
@@ -60,7 +60,7 @@ struct Method {
   // vertices are lit, which only a method lighting vertices alone can use.
   bool lights_subtriangles;
   // Which triangles the front end gives a hybrid segment length (frame/method_needs.h).
-  SegmentSteps (*segment_steps)(const RenderOptions& choices);
+  SegmentSteps (*segment_steps)(const RenderOptions& options);
 };
 
 std::span<const Method> all_methods();

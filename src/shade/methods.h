@@ -10,14 +10,14 @@ AttrNeeds reference_needs(const ShadeConstants& shade);
 // float cannot hold (MaterialConstants::shade_in_double), decided per triangle at setup.
 void draw_reference(const Frame& frame, uint32_t entry, const TileTarget& target);
 DrawTriangleFn select_reference(SimdTarget simd, const ShadeConstants& shade);  // scalar: ignores simd
-std::string reference_refuses(const RenderOptions& choices);
+std::string reference_refuses(const RenderOptions& options);
 
 AttrNeeds phong_needs(const ShadeConstants& shade);
 DrawTriangleFn select_phong(SimdTarget simd, const ShadeConstants& shade);
 DrawTriangleFn select_phong_normals(SimdTarget simd, const ShadeConstants& shade);  // --normals other than normalize
 
 // Methods that interpolate no per-pixel normal refuse --normals.
-std::string refuses_normals(const RenderOptions& choices);
+std::string refuses_normals(const RenderOptions& options);
 
 // For methods that take every option.
 inline std::string accepts_all(const RenderOptions&) { return {}; }
@@ -32,8 +32,8 @@ DrawTriangleFn select_phong_diffuse(SimdTarget simd, const ShadeConstants& shade
 DrawTriangleFn select_phong_normals_diffuse(SimdTarget simd, const ShadeConstants& shade);
 
 AttrNeeds auto_needs(const ShadeConstants& shade);
-TileDraw select_auto(SimdTarget simd, const ShadeConstants& shade, const RenderOptions& choices);
-SegmentSteps auto_segment_steps(const RenderOptions& choices);
+TileDraw select_auto(SimdTarget simd, const ShadeConstants& shade, const RenderOptions& options);
+SegmentSteps auto_segment_steps(const RenderOptions& options);
 
 DrawTriangleFn select_hybrid(SimdTarget simd, const ShadeConstants& shade);
 
