@@ -38,7 +38,7 @@ struct Setup {
     bary = barycentrics(tri, triangle_edges(tri));
     shade.ambient = glm::vec3(0.1f);
     shade.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(1, 1, 2.732f)), glm::vec3(1)});
-    material = {glm::vec3(0.7f), glm::vec3(0.5f), 100.0f, 100.0, make_brdf(parse_brdf(brdf, "bench"), 100.0)};
+    material = {glm::vec3(0.7f), glm::vec3(0.5f), 100.0f, 100.0, make_brdf(parse_option<BrdfChoice>(brdf, "bench"), 100.0)};
     const Plane depth_plane = make_plane(bary, 0.5, 0.5, 0.5);
     const glm::vec3 colors[3] = {{0.2f, 0.3f, 0.9f}, {0.5f, 0.4f, 0.1f}, {0.8f, 0.1f, 0.5f}};
     gouraud.bary = bary;

@@ -1,6 +1,7 @@
 // What a renderer is asked to do, as typed values; each value's spelling (the one the command
 // line, config files, Python and the statistics use); the methods and the ISAs this CPU offers.
 #pragma once
+#include <concepts>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -111,6 +112,9 @@ struct OptionSpellings<HiddenFaces> {
 
 template <class E>
 concept OptionEnum = requires { OptionSpellings<E>::kValues; };
+// What an option's text can name: an enum's value, or a BRDF with its power ("cosk:3").
+template <class T>
+concept OptionValue = OptionEnum<T> || std::same_as<T, BrdfChoice>;
 
 template <OptionEnum E>
 constexpr std::string_view option_name(E value) {
@@ -123,11 +127,13 @@ inline std::string option_name(const BrdfChoice& brdf) {  // "exact", "cosk:3"
   return brdf.kind == BrdfKind::CosK ? name + ":" + std::to_string(brdf.k) : name;
 }
 
-// Reads a spelling; throws InputError naming `where` (a flag, a config key, a keyword) and the
-// spellings it accepts. The command line, config files and Python read options through these.
-template <OptionEnum E>
-E parse_option(std::string_view text, const std::string& where);
-BrdfChoice parse_brdf(std::string_view text, const std::string& where);
+// Reads a spelling (option_name's); throws InputError naming `where` (a flag, a config key, a
+// keyword) and the spellings it accepts. The command line, config files and Python read options
+// through this.
+template <OptionValue T>
+T parse_option(std::string_view text, const std::string& where);
+template <>
+BrdfChoice parse_option<BrdfChoice>(std::string_view text, const std::string& where);
 
 // The one options struct that reaches the renderer; printable for logs and stats.
 struct RenderOptions {

@@ -90,9 +90,9 @@ nb::tuple render_frame(PyRenderer& r, bool depth, bool normal, bool triangle_id,
 namespace {
 
 // A keyword's text as its typed option; a bad spelling names the keyword.
-template <OptionEnum E>
-E option_from(const nb::dict& d, const char* key) {
-  return parse_option<E>(nb::cast<std::string>(d[key]), key);
+template <OptionValue T>
+T option_from(const nb::dict& d, const char* key) {
+  return parse_option<T>(nb::cast<std::string>(d[key]), key);
 }
 
 }  // namespace
@@ -105,7 +105,7 @@ RenderOptions render_options(const nb::dict& d) {
   o.tile_px = nb::cast<int>(d["tile"]);
   o.isa = option_from<Isa>(d, "isa");
   o.srgb = nb::cast<bool>(d["srgb"]);
-  o.brdf = parse_brdf(nb::cast<std::string>(d["brdf"]), "brdf");
+  o.brdf = option_from<BrdfChoice>(d, "brdf");
   o.normals = option_from<PhongNormals>(d, "normals");
   o.gouraud = option_from<GouraudMode>(d, "gouraud");
   o.hidden_faces = option_from<HiddenFaces>(d, "hidden_faces");

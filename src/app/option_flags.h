@@ -10,20 +10,12 @@
 
 namespace fastshade {
 
-template <OptionEnum E>
-CLI::Option* add_option_flag(CLI::App* app, const std::string& flag, E& target, const std::string& help) {
+template <OptionValue T>
+CLI::Option* add_option_flag(CLI::App* app, const std::string& flag, T& target, const std::string& help) {
   return app
       ->add_option_function<std::string>(
-          flag, [&target, flag](const std::string& text) { target = parse_option<E>(text, flag); }, help)
+          flag, [&target, flag](const std::string& text) { target = parse_option<T>(text, flag); }, help)
       ->type_name("NAME");
-}
-
-inline CLI::Option* add_option_flag(CLI::App* app, const std::string& flag, BrdfChoice& target,
-                                    const std::string& help) {
-  return app
-      ->add_option_function<std::string>(
-          flag, [&target, flag](const std::string& text) { target = parse_brdf(text, flag); }, help)
-      ->type_name("BRDF");
 }
 
 }  // namespace fastshade

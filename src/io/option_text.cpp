@@ -28,12 +28,12 @@ std::string spellings_text() {
 
 }  // namespace
 
-template <OptionEnum E>
-E parse_option(std::string_view text, const std::string& where) {
-  for (const auto& [value, name] : OptionSpellings<E>::kValues)
+template <OptionValue T>
+T parse_option(std::string_view text, const std::string& where) {
+  for (const auto& [value, name] : OptionSpellings<T>::kValues)
     if (text == name) return value;
-  throw InputError(where, "unknown " + std::string(OptionSpellings<E>::kWhat) + " '" + std::string(text) +
-                              "' (expected " + spellings_text<E>() + ")");
+  throw InputError(where, "unknown " + std::string(OptionSpellings<T>::kWhat) + " '" + std::string(text) +
+                              "' (expected " + spellings_text<T>() + ")");
 }
 
 template ShadingMethod parse_option(std::string_view, const std::string&);
@@ -44,7 +44,8 @@ template SpecMethod parse_option(std::string_view, const std::string&);
 template ClassifierRule parse_option(std::string_view, const std::string&);
 template HiddenFaces parse_option(std::string_view, const std::string&);
 
-BrdfChoice parse_brdf(std::string_view text, const std::string& where) {
+template <>
+BrdfChoice parse_option(std::string_view text, const std::string& where) {
   if (text.starts_with("cosk:")) {
     const std::string_view k = text.substr(5);
     if (k.size() != 1 || k[0] < '0' + kMinCosK || k[0] > '0' + kMaxCosK)

@@ -31,8 +31,6 @@ void read_option(const Reader& r, const json& value, const RenderConfigKey& key,
           o.*member = r.number(value, path, json_path::kAnyNumber);
         else if constexpr (std::is_same_v<T, bool>)
           o.*member = r.boolean(value, path);
-        else if constexpr (std::is_same_v<T, BrdfChoice>)
-          o.*member = parse_brdf(r.string(value, path), where);
         else
           o.*member = parse_option<T>(r.string(value, path), where);
       },

@@ -67,26 +67,26 @@ TEST(Brdf, ErrorAgainstCosPowerWithinDocumentedBounds) {
                           {"poly3", 1e-6, 0.025}};
   for (const Bound& b : bounds)
     for (double n : kShininess) {
-      const double e = max_error(make_brdf(parse_brdf(b.name, "test"), n), n);
+      const double e = max_error(make_brdf(parse_option<BrdfChoice>(b.name, "test"), n), n);
       EXPECT_LE(e, n < 2 ? b.at_one : b.from_two) << b.name << " n=" << n;
     }
 }
 
 TEST(Brdf, SchlickPow2ImprovesWithShininessAsNotesSay) {
   // docs/PAPER.md, "Reading eq. 5": .012 at n = 5 down to 6e-6 at n = 1e4.
-  const BrdfChoice choice = parse_brdf("schlick-pow2", "test");
+  const BrdfChoice choice = parse_option<BrdfChoice>("schlick-pow2", "test");
   EXPECT_LT(max_error(make_brdf(choice, 1e4), 1e4), 2e-5);
   EXPECT_LT(max_error(make_brdf(choice, 1000), 1000), 5e-4);
   EXPECT_LT(max_error(make_brdf(choice, 1000), 1000), max_error(make_brdf(choice, 10), 10));
 }
 
 TEST(Brdf, ParsingRejectsUnknownNamesAndBadPowers) {
-  EXPECT_THROW(parse_brdf("phong", "--brdf"), InputError);
-  EXPECT_THROW(parse_brdf("cosk:0", "--brdf"), InputError);
-  EXPECT_THROW(parse_brdf("cosk:9", "--brdf"), InputError);
-  EXPECT_THROW(parse_brdf("cosk:", "--brdf"), InputError);
-  EXPECT_EQ(parse_brdf("cosk:3", "--brdf").k, 3);
-  for (const BrdfChoice& choice : brdf_choices()) EXPECT_EQ(parse_brdf(option_name(choice), "x"), choice);
+  EXPECT_THROW(parse_option<BrdfChoice>("phong", "--brdf"), InputError);
+  EXPECT_THROW(parse_option<BrdfChoice>("cosk:0", "--brdf"), InputError);
+  EXPECT_THROW(parse_option<BrdfChoice>("cosk:9", "--brdf"), InputError);
+  EXPECT_THROW(parse_option<BrdfChoice>("cosk:", "--brdf"), InputError);
+  EXPECT_EQ(parse_option<BrdfChoice>("cosk:3", "--brdf").k, 3);
+  for (const BrdfChoice& choice : brdf_choices()) EXPECT_EQ(parse_option<BrdfChoice>(option_name(choice), "x"), choice);
 }
 
 // Kernels whose arithmetic is the scalar reference's exactly (IEEE +, -, *, / in the same

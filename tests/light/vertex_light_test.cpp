@@ -74,7 +74,7 @@ TEST(VertexLight, LocalViewerAndDoubleMaterialsAreTheScalarColours) {
   k.local_viewer = true;
   const std::vector<glm::vec3> normals = {glm::normalize(glm::vec3(0.2f, 0.3f, 1)), glm::vec3(0, 1, 0)};
   const std::vector<glm::vec3> positions = {glm::vec3(0.5f, -0.2f, -3), glm::vec3(-1, 0.4f, -5)};
-  MaterialConstants m{glm::vec3(0.7f), glm::vec3(0.5f), 100.0f, 100.0, make_brdf(parse_brdf("exact", "test"), 100.0)};
+  MaterialConstants m{glm::vec3(0.7f), glm::vec3(0.5f), 100.0f, 100.0, make_brdf(parse_option<BrdfChoice>("exact", "test"), 100.0)};
   for (bool in_double : {false, true}) {
     m.shade_in_double = in_double;
     k.local_viewer = !in_double;

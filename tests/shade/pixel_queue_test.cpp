@@ -88,7 +88,7 @@ TEST(PixelQueue, LaterEntriesWinAndWholeVectorsFirstEndsTheSame) {
   QueueCase c;
   c.k.ambient = glm::vec3(0.1f);
   c.k.lights.push_back({glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(1, 1, 2.732f)), glm::vec3(1.0f)});
-  c.m = {glm::vec3(0.7f), glm::vec3(0.5f), 32.0f, 32.0, make_brdf(parse_brdf("exact", "test"), 32.0)};
+  c.m = {glm::vec3(0.7f), glm::vec3(0.5f), 32.0f, 32.0, make_brdf(parse_option<BrdfChoice>("exact", "test"), 32.0)};
   for (const Isa isa_id : available_isas()) {
     const std::string isa(option_name(isa_id));
     const SimdTarget simd = simd_target(isa_id);

@@ -11,7 +11,7 @@ int main() {
   fastshade::RenderOptions options;
   options.threads = 2;
   options.method = fastshade::ShadingMethod::Phong;
-  options.brdf = fastshade::parse_brdf("cosk:3", "brdf");
+  options.brdf = fastshade::parse_option<fastshade::BrdfChoice>("cosk:3", "brdf");
   const fastshade::Image image = fastshade::render(scene, options);
   if (image.width != scene.width || image.height != scene.height ||
       image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
