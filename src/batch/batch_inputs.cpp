@@ -159,22 +159,34 @@ std::vector<BatchMesh> find_meshes(const std::vector<std::string>& inputs) {
   return unique;
 }
 
+namespace {
+
+InputError bad_shard(const std::string& text, const std::string& where) {
+  return InputError(where, "expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards) +
+                               " (I counts from 0), got '" + text + "'");
+}
+
+bool valid_shard(Shard shard) {
+  return shard.count >= 1 && shard.count <= kMaxShards && shard.index >= 0 && shard.index < shard.count;
+}
+
+}  // namespace
+
+void check_shard(Shard shard, const std::string& where) {
+  if (!valid_shard(shard)) throw bad_shard(std::to_string(shard.index) + "/" + std::to_string(shard.count), where);
+}
+
 Shard parse_shard(const std::string& text, const std::string& where) {
-  const auto bad = [&] {
-    return InputError(where, "expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards) +
-                                     " (I counts from 0), got '" + text + "'");
-  };
   const std::size_t slash = text.find('/');
-  if (slash == std::string::npos) throw bad();
+  if (slash == std::string::npos) throw bad_shard(text, where);
   Shard shard;
   const char* begin = text.data();
   const char* end = begin + text.size();
   auto [index_end, index_err] = std::from_chars(begin, begin + slash, shard.index);
   auto [count_end, count_err] = std::from_chars(begin + slash + 1, end, shard.count);
-  if (index_err != std::errc() || index_end != begin + slash || count_err != std::errc() ||
-      count_end != end || shard.count < 1 || shard.count > kMaxShards || shard.index < 0 ||
-      shard.index >= shard.count)
-    throw bad();
+  if (index_err != std::errc() || index_end != begin + slash || count_err != std::errc() || count_end != end ||
+      !valid_shard(shard))
+    throw bad_shard(text, where);
   return shard;
 }
 

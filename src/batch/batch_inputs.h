@@ -21,6 +21,9 @@ namespace fastshade {
 // argument that is none of these, no mesh at all, or two keys whose names collide.
 std::vector<BatchMesh> find_meshes(const std::vector<std::string>& inputs);
 
+// Throws parse_shard's InputError, naming `where`, unless 0 <= I < N <= kMaxShards.
+void check_shard(Shard shard, const std::string& where);
+
 // The meshes of one shard: the j-th mesh of the sorted list goes to shard j mod N (round
 // robin, so that each shard gets a similar mix of directories). The shards partition the list.
 std::vector<BatchMesh> take_shard(const std::vector<BatchMesh>& meshes, Shard shard);

@@ -132,25 +132,24 @@ SceneTemplate batch_template(const BatchSpec& spec) {
   return scene;
 }
 
-PreparedBatch prepare_batch(const BatchSpec& spec) {
+BatchPlan plan_batch(const BatchSpec& spec) {
   // Everything is checked before anything is written.
   validate(spec.options);
   if (spec.views < 1 || spec.views > kMaxViews)
     throw InputError("--views", "expected 1 to " + std::to_string(kMaxViews) + ", got " + std::to_string(spec.views));
   if (spec.format != "png" && spec.format != "exr" && spec.format != "tif")
     throw InputError("--format", "expected png, exr or tif, got '" + spec.format + "'");
-  const Shard shard = parse_shard(std::to_string(spec.shard_index) + "/" + std::to_string(spec.shard_count));
-  PreparedBatch prepared{batch_template(spec), {}};
+  const Shard shard{spec.shard_index, spec.shard_count};
+  check_shard(shard, "--shard");
+  const SceneTemplate scene = batch_template(spec);
   const std::vector<BatchMesh> meshes = take_shard(find_meshes(spec.inputs), shard);
   check_outdir(spec.outdir, spec.format);
   std::set<std::string> outputs;
-  prepared.plan = plan_images(meshes, settings_text(prepared.scene, spec), spec,
-                              completed_images(spec.outdir / "results.jsonl"), outputs);
+  BatchPlan plan = plan_images(meshes, settings_text(scene, spec), spec,
+                               completed_images(spec.outdir / "results.jsonl"), outputs);
   remove_stale_temp_files(spec.outdir, outputs);
-  return prepared;
+  return plan;
 }
-
-BatchPlan plan_batch(const BatchSpec& spec) { return prepare_batch(spec).plan; }
 
 std::vector<std::string> render_mesh_job(const BatchSpec& spec, const MeshJob& job) {
   const SceneTemplate scene = batch_template(spec);
