@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "app/format.h"
 #include "fastshade/error.h"
@@ -57,8 +58,18 @@ std::size_t plan_candidates(const TuneCommand& cmd, const RenderOptions& base, s
     const bool seen = std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.options == o; });
     if (!seen) out.push_back({"", o});
   };
-  for (const std::string& method_name : cmd.methods) {
-    const auto method = parse_option<ShadingMethod>(method_name, "--methods");
+  std::vector<ShadingMethod> methods;
+  for (const std::string& name : cmd.methods) methods.push_back(parse_option<ShadingMethod>(name, "--methods"));
+  // The classifier's lists are read only if a method classifies, as only such a method uses them.
+  std::vector<SpecMethod> spec_methods;
+  std::vector<ClassifierRule> classifiers;
+  if (std::any_of(methods.begin(), methods.end(), method_classifies)) {
+    for (const std::string& name : cmd.spec_methods)
+      spec_methods.push_back(parse_option<SpecMethod>(name, "--spec-methods"));
+    for (const std::string& name : cmd.classifiers)
+      classifiers.push_back(parse_option<ClassifierRule>(name, "--classifiers"));
+  }
+  for (const ShadingMethod method : methods) {
     for (int tile : cmd.tiles) {
       RenderOptions o = base;
       o.method = method;
@@ -68,14 +79,14 @@ std::size_t plan_candidates(const TuneCommand& cmd, const RenderOptions& base, s
         continue;
       }
       for (double threshold : thresholds)
-        for (const std::string& spec_method : cmd.spec_methods)
-          for (const std::string& classifier : cmd.classifiers)
+        for (const SpecMethod spec_method : spec_methods)
+          for (const ClassifierRule classifier : classifiers)
             for (double classify_min_px : cmd.classify_min_pxs) {
-              o.spec_threshold = threshold;
-              o.spec_method = parse_option<SpecMethod>(spec_method, "--spec-methods");
-              o.classifier = parse_option<ClassifierRule>(classifier, "--classifiers");
               // The paper's rule classifies every triangle whatever the bound: one candidate.
-              if (o.classifier == ClassifierRule::Paper && classify_min_px != cmd.classify_min_pxs.front()) continue;
+              if (classifier == ClassifierRule::Paper && classify_min_px != cmd.classify_min_pxs.front()) continue;
+              o.spec_threshold = threshold;
+              o.spec_method = spec_method;
+              o.classifier = classifier;
               o.classify_min_px = classify_min_px;
               add(o);
             }
