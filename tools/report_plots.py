@@ -136,12 +136,14 @@ def main():
     csv_path, out_dir = sys.argv[1], sys.argv[2]
     with open(csv_path, newline="") as f:
         rows = list(csv.DictReader(f))
-    scenes = OrderedDict()
+    # One plot per scene and ISA: the rows name their plot's file.
+    plots = OrderedDict()
     for r in rows:
-        scenes.setdefault(r["scene"], []).append(r)
+        plots.setdefault(r["plot"], []).append(r)
     extra_colours = {}
-    for scene, rs in scenes.items():
+    for rs in plots.values():
         first = rs[0]
+        scene = first["scene"]
         fig, axes = plt.subplots(1, 2, figsize=(12, 5))
         panel(axes[0], rs, "rmse_lsb", "pareto_rmse", "RMSE", extra_colours)
         panel(axes[1], rs, "max_abs_lsb", "pareto_max", "max error", extra_colours)

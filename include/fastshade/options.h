@@ -45,9 +45,11 @@ enum class PhongNormals : uint8_t { Normalize, Adaptive, EqualAngle };
 enum class GouraudMode : uint8_t { Increments, Sierpinski };
 // auto: the kernel of triangles that may show a highlight.
 enum class SpecMethod : uint8_t { Hybrid, Phong };
-// auto: the error-checked classifier, or the paper's literal rule (highlight -> specular path,
-// the rest -> Gouraud).
-enum class ClassifierRule : uint8_t { Bound, Paper };
+// auto: how triangles are sent down its shading paths. Cost: the error-checked classifier where
+// the cost model finds it pays on this frame and ISA, per-pixel Phong everywhere where it cannot
+// (docs/CLASSIFIER.md, "When auto classifies"); Bound: the error-checked classifier always;
+// Paper: the paper's literal rule (highlight -> specular path, the rest -> Gouraud).
+enum class ClassifierRule : uint8_t { Cost, Bound, Paper };
 // Skip: back faces that their own closed (or capped) mesh provably hides are culled at set-up;
 // Draw: every face is drawn, as a z-buffer without the test would.
 enum class HiddenFaces : uint8_t { Skip, Draw };
@@ -100,8 +102,8 @@ struct OptionSpellings<SpecMethod> {
 template <>
 struct OptionSpellings<ClassifierRule> {
   static constexpr std::string_view kWhat = "classifier";
-  static constexpr std::pair<ClassifierRule, std::string_view> kValues[] = {{ClassifierRule::Bound, "bound"},
-                                                                            {ClassifierRule::Paper, "paper"}};
+  static constexpr std::pair<ClassifierRule, std::string_view> kValues[] = {
+      {ClassifierRule::Cost, "cost"}, {ClassifierRule::Bound, "bound"}, {ClassifierRule::Paper, "paper"}};
 };
 template <>
 struct OptionSpellings<HiddenFaces> {
@@ -150,8 +152,8 @@ struct RenderOptions {
   // auto: a triangle whose specular term stays below this (colour units) gets no specular work
   double spec_threshold = 1.0 / 510.0;
   SpecMethod spec_method = SpecMethod::Hybrid;         // auto only
-  ClassifierRule classifier = ClassifierRule::Bound;  // auto only
-  // auto (bound): a block of triangles whose screen boxes average fewer pixels than this takes
+  ClassifierRule classifier = ClassifierRule::Cost;  // auto only
+  // auto (cost, bound): a block of triangles whose screen boxes average fewer pixels than this takes
   // the specular path unclassified, where classifying would cost more than it saves; 0:
   // classify every triangle. 80: the 1080p bunny (boxes of about 30 px) ran 1.25-1.28x gouraud
   // with 40 and 1.13-1.19x with 80 against 1.21-1.42x classified, and meshes with larger

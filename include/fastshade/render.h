@@ -34,6 +34,9 @@ struct RenderStats {
   long long covered_pixels = 0;     // pixels any triangle covers (after depth, counted once)
   int threads = 0, tile = 0;
   std::string isa, method;
+  // The method that drew: `method`, except where `auto`'s cost model found classifying cannot
+  // pay on this frame and ISA and drew it as `phong` (docs/CLASSIFIER.md, "When auto classifies").
+  std::string drawn_as;
   std::vector<PathStats> paths;        // classifying methods only
   long long triangles_unclassified = 0;  // of paths' specular: sent there unclassified (--classify-min-px)
   // Frames that draw hybrid segments: of the triangles wide enough for them, how many take

@@ -36,7 +36,7 @@ Normals = Literal["normalize", "adaptive", "equal-angle"]
 GouraudMode = Literal["increments", "sierpinski"]
 HiddenFaces = Literal["skip", "draw"]
 SpecMethod = Literal["hybrid", "phong"]
-Classifier = Literal["bound", "paper"]
+Classifier = Literal["cost", "bound", "paper"]
 
 
 # The outputs a render can return beside colour (docs/PYTHON.md, "Outputs").
@@ -110,7 +110,7 @@ class Renderer:
                  tile: int = 64, isa: Isa = "best", srgb: bool = False, brdf: str = "exact",
                  normals: Normals = "normalize", gouraud: GouraudMode = "increments",
                  hidden_faces: HiddenFaces = "skip", spec_threshold: float = 1.0 / 510.0,
-                 spec_method: SpecMethod = "hybrid", classifier: Classifier = "bound",
+                 spec_method: SpecMethod = "hybrid", classifier: Classifier = "cost",
                  classify_min_px: float = 80.0, **unknown):
         options = {name: value for name, value in locals().items() if name in _OPTIONS}
         self._renderer = _Renderer(scene, _checked_options(dict(options, **unknown)))

@@ -72,7 +72,7 @@ struct ReportCommand {
   std::string models;                // shared meshes' directory for the default set
   std::vector<std::string> configs;  // "METHOD [FLAGS]"; empty: the whole table
   int threads = 0, frames = 5, heat_maps = 3;
-  Isa isa = Isa::Best;
+  std::vector<Isa> isas = {Isa::Best};  // each measured in turn, phong's speed-up per ISA
   bool list_configs = false, no_plots = false;
   RenderFlagsParser parse_render_flags;
 };
@@ -88,7 +88,7 @@ struct TuneCommand {
   std::vector<int> tiles = {8, 16, 32, 64, 128, 256};
   std::vector<double> thresholds;   // auto's --spec-threshold values; empty: from max_error
   std::vector<std::string> spec_methods = {"hybrid", "phong"};
-  std::vector<std::string> classifiers = {"bound"};
+  std::vector<std::string> classifiers = {"cost"};
   std::vector<double> classify_min_pxs = {RenderOptions{}.classify_min_px};
   int threads = 0, frames = 20;
   Isa isa = Isa::Best;

@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
   add_option_flag(r, "--spec-method", render.options.spec_method,
                 "auto: kernel for triangles that may show a highlight: hybrid (default) or phong");
   add_option_flag(r, "--classifier", render.options.classifier,
-                "auto: bound (error-checked, default) or paper (highlight -> specular, rest -> Gouraud)");
+                "auto: cost (the classifier where it pays on this frame and ISA, else phong; default), bound "
+                "(the error-checked classifier always) or paper (highlight -> specular, rest -> Gouraud)");
   r->add_option("--classify-min-px", render.options.classify_min_px,
                 "auto: blocks of triangles whose screen boxes average fewer pixels than this take the "
                 "specular path unclassified, as classifying costs more than it saves there (default 80; "
@@ -85,7 +86,8 @@ int main(int argc, char** argv) {
   rep->add_option("--threads", report.threads, "worker threads (0 = all)")->capture_default_str();
   rep->add_option("--frames", report.frames, "timed frames per configuration after one warm-up")
       ->capture_default_str();
-  add_option_flag(rep, "--isa", report.isa, "SIMD target: scalar, sse4, avx2, avx512, best");
+  add_option_list_flag(rep, "--isa", report.isas,
+                       "SIMD targets, comma-separated: scalar, sse4, avx2, avx512, best (each a table)");
   rep->add_option("--models", report.models, "the shared meshes' directory, for the default set");
   rep->add_option("--config", report.configs,
                   "measure this instead of the built-in list, repeatable: --config \"hybrid --max-error 2\"")

@@ -3,6 +3,7 @@
 // the flag.
 #pragma once
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,22 @@ CLI::Option* add_option_flag(CLI::App* app, const std::string& flag, T& target, 
       ->add_option_function<std::string>(
           flag, [&target, flag](const std::string& text) { target = parse_option<T>(text, flag); }, help)
       ->type_name("NAME");
+}
+
+// A list of them: comma-separated ("--isa scalar,avx2"), the flag given again replacing it.
+template <OptionValue T>
+CLI::Option* add_option_list_flag(CLI::App* app, const std::string& flag, std::vector<T>& target,
+                                  const std::string& help) {
+  return app
+      ->add_option_function<std::vector<std::string>>(
+          flag,
+          [&target, flag](const std::vector<std::string>& texts) {
+            target.clear();
+            for (const std::string& text : texts) target.push_back(parse_option<T>(text, flag));
+          },
+          help)
+      ->delimiter(',')
+      ->type_name("NAME[,NAME...]");
 }
 
 }  // namespace fastshade

@@ -44,7 +44,7 @@ struct Plan {
 };
 
 // A table line this build cannot run is skipped; a --config line it cannot run is bad usage.
-Plan plan_configs(const ReportCommand& cmd) {
+Plan plan_configs(const ReportCommand& cmd, Isa isa) {
   Plan plan;
   for (ReportConfig& c : configs_to_measure(cmd.configs)) {
     std::string why;
@@ -52,7 +52,7 @@ Plan plan_configs(const ReportCommand& cmd) {
     try {
       options = config_options(c, cmd.parse_render_flags, [&](RenderOptions& o) {
         o.threads = cmd.threads;
-        o.isa = cmd.isa;
+        o.isa = isa;
       });
     } catch (const InputError& e) {
       why = e.what();
@@ -90,7 +90,8 @@ std::string file_stem(const std::string& name) {
   return s;
 }
 
-std::vector<ReportRow> scene_rows(const std::string& name, const Plan& plan,
+// One scene's rows on one ISA, against that ISA's reference and phong.
+std::vector<ReportRow> scene_rows(const std::string& name, const std::string& isa, const Plan& plan,
                                   const std::vector<Measured>& m) {
   const Measured& reference = m[0];
   const double phong_ms = median(m[1].total_ms);
@@ -98,6 +99,7 @@ std::vector<ReportRow> scene_rows(const std::string& name, const Plan& plan,
   for (std::size_t i = 0; i < m.size(); ++i) {
     ReportRow r;
     r.scene = name;
+    r.isa = isa;
     r.config = plan.configs[i].config.label;
     r.method = plan.configs[i].config.method;
     r.width = m[i].image.width;
@@ -131,9 +133,10 @@ Rgb8 background_rgb8(const Scene& scene) {
 }
 
 // Heat maps of the `count` configurations with the largest RMSE among those off by more than
-// 1 LSB somewhere (an error of one step is rounding, and its map says nothing).
+// 1 LSB somewhere (an error of one step is rounding, and its map says nothing). `suffix` tells
+// the ISAs of one run apart ("" when there is one).
 void write_heat_maps(const fs::path& out, const Scene& scene, std::vector<ReportRow>& rows,
-                     const std::vector<Measured>& m, int count) {
+                     const std::vector<Measured>& m, int count, const std::string& suffix) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (rows[i].error.max_abs_lsb > 1) order.push_back(i);
@@ -141,7 +144,8 @@ void write_heat_maps(const fs::path& out, const Scene& scene, std::vector<Report
             [&](std::size_t a, std::size_t b) { return rows[a].error.rmse_lsb > rows[b].error.rmse_lsb; });
   if (order.size() > static_cast<std::size_t>(count)) order.resize(count);
   for (std::size_t i : order) {
-    const fs::path rel = fs::path("heatmaps") / (file_stem(rows[i].scene) + "--" + file_stem(rows[i].config) + ".png");
+    const fs::path rel =
+        fs::path("heatmaps") / (file_stem(rows[i].scene) + "--" + file_stem(rows[i].config) + suffix + ".png");
     fs::create_directories(out / rel.parent_path());
     write_image(error_heat_map(m[i].image, m[0].image, background_rgb8(scene)), out / rel);
     rows[i].heat_map = rel.string();
@@ -192,8 +196,20 @@ int run_report(const ReportCommand& cmd) {
   RenderOptions common;
   common.threads = cmd.threads;
   validate(common);
-  const std::string isa_name(option_name(resolve_isa(cmd.isa)));  // refuses a bad --isa first
-  const Plan plan = plan_configs(cmd);
+  // Each ISA the CPU can run, once (`best` is one of them), before anything else is read.
+  std::vector<Isa> isas;
+  std::string isa_names;
+  for (const Isa asked : cmd.isas) {
+    const Isa isa = resolve_isa(asked);
+    if (std::find(isas.begin(), isas.end(), isa) != isas.end())
+      throw InputError("--isa", "'" + std::string(option_name(isa)) + "' is listed twice");
+    isas.push_back(isa);
+    isa_names += (isa_names.empty() ? "" : ",") + std::string(option_name(isa));
+  }
+  if (isas.empty()) throw InputError("--isa", "expected at least one ISA");
+  std::vector<Plan> plans;
+  for (const Isa isa : isas) plans.push_back(plan_configs(cmd, isa));
+  const Plan& plan = plans.front();  // the ISAs differ in their options' isa alone
   if (cmd.list_configs) {
     for (const PlannedConfig& p : plan.configs) std::printf("measured  %s\n", p.config.label.c_str());
     for (const SkippedConfig& s : plan.skipped) std::printf("skipped   %s  (%s)\n", s.config.c_str(), s.reason.c_str());
@@ -211,26 +227,30 @@ int run_report(const ReportCommand& cmd) {
   double total_cost = 0;
   for (const SceneInput& in : scene_inputs) {
     scenes.push_back(load_report_scene(in));
-    total_cost += (cmd.frames + 1.0) * double(plan.configs.size()) * frame_cost(scenes.back());
+    total_cost += (cmd.frames + 1.0) * double(plan.configs.size() * isas.size()) * frame_cost(scenes.back());
   }
   fs::create_directories(out);
 
-  RunInfo run{cpu_model(), isa_name, build_commit(), utc_now(), 0, cmd.frames, load_average()};
+  RunInfo run{cpu_model(), isa_names, build_commit(), utc_now(), 0, cmd.frames, load_average()};
   std::vector<ReportRow> rows;
   {
     Progress progress(total_cost, stderr, ::isatty(STDERR_FILENO) != 0);
-    std::vector<RenderOptions> options;
-    std::vector<std::string> labels;
-    for (const PlannedConfig& p : plan.configs) options.push_back(p.options), labels.push_back(p.config.label);
-    for (std::size_t s = 0; s < scenes.size(); ++s) {
-      const std::string& name = scene_inputs[s].name;
-      const std::vector<Measured> m = measure_in_rounds(name, scenes[s], options, labels, cmd.frames, progress);
-      run.threads = m[0].stats.threads;
-      std::vector<ReportRow> scene = scene_rows(name, plan, m);
-      write_heat_maps(out, scenes[s], scene, m, cmd.heat_maps);
-      for (ReportRow& r : scene) r.plot = (fs::path("plots") / (file_stem(name) + ".png")).string();
-      rows.insert(rows.end(), scene.begin(), scene.end());
-    }
+    for (std::size_t s = 0; s < scenes.size(); ++s)
+      for (std::size_t i = 0; i < isas.size(); ++i) {
+        const std::string& name = scene_inputs[s].name;
+        const std::string isa(option_name(isas[i]));
+        std::vector<RenderOptions> options;
+        std::vector<std::string> labels;
+        for (const PlannedConfig& p : plans[i].configs)
+          options.push_back(p.options), labels.push_back(isas.size() > 1 ? p.config.label + " @" + isa : p.config.label);
+        const std::vector<Measured> m = measure_in_rounds(name, scenes[s], options, labels, cmd.frames, progress);
+        run.threads = m[0].stats.threads;
+        std::vector<ReportRow> scene = scene_rows(name, isa, plans[i], m);
+        const std::string suffix = isas.size() > 1 ? "--" + isa : "";
+        write_heat_maps(out, scenes[s], scene, m, cmd.heat_maps, suffix);
+        for (ReportRow& r : scene) r.plot = (fs::path("plots") / (file_stem(name) + suffix + ".png")).string();
+        rows.insert(rows.end(), scene.begin(), scene.end());
+      }
   }
 
   run.load_end = load_average();

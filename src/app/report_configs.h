@@ -36,14 +36,16 @@ inline constexpr std::string_view kReportConfigs[] = {
     "hybrid --max-error 1",
     "hybrid --max-error 2",
     "hybrid --max-error 4",
-    // The classifier (issue 4). Thresholds on ks max(N.H)^n: the default (half an 8-bit step,
-    // 1/510), 0 (specular path everywhere), then 1, 2 and 4 steps.
+    // The default, as its cost model decides per frame and ISA; then the classifier itself on
+    // every frame (issue 4), at thresholds on ks max(N.H)^n of the default (half an 8-bit
+    // step, 1/510), 0 (specular path everywhere), then 1, 2 and 4 steps.
     "auto",
-    "auto --spec-threshold 0",
-    "auto --spec-threshold 0.0039",
-    "auto --spec-threshold 0.0078",
-    "auto --spec-threshold 0.0157",
-    "auto --spec-method phong",
+    "auto --classifier bound",
+    "auto --classifier bound --spec-threshold 0",
+    "auto --classifier bound --spec-threshold 0.0039",
+    "auto --classifier bound --spec-threshold 0.0078",
+    "auto --classifier bound --spec-threshold 0.0157",
+    "auto --classifier bound --spec-method phong",
     "auto --classifier paper",
 };
 

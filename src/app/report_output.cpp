@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <map>
 
 #include <nlohmann/json.hpp>
@@ -36,7 +37,7 @@ Json row_fields(const RunInfo& run, const ReportRow& r) {
               {"heat_map", r.heat_map},
               {"plot", r.plot},
               {"machine", run.machine},
-              {"isa", run.isa},
+              {"isa", r.isa},
               {"threads", run.threads},
               {"commit", run.commit}};
 }
@@ -81,18 +82,38 @@ std::vector<std::pair<std::string, std::vector<const ReportRow*>>> by_config(
   return out;
 }
 
-void overview(std::string& md, std::span<const ReportRow> rows, int scenes) {
-  md += "## Overview over " + std::to_string(scenes) +
-        " scenes\n\n"
+// The ISAs of the rows, in the order first met.
+std::vector<std::string> isas_of(std::span<const ReportRow> rows) {
+  std::vector<std::string> out;
+  for (const ReportRow& r : rows)
+    if (std::find(out.begin(), out.end(), r.isa) == out.end()) out.push_back(r.isa);
+  return out;
+}
+
+std::vector<ReportRow> rows_on(std::span<const ReportRow> rows, const std::string& isa) {
+  std::vector<ReportRow> out;
+  std::copy_if(rows.begin(), rows.end(), std::back_inserter(out), [&](const ReportRow& r) { return r.isa == isa; });
+  return out;
+}
+
+double geo_mean_speedup(const std::vector<const ReportRow*>& rs) {
+  double log_sum = 0;
+  for (const ReportRow* r : rs) log_sum += std::log(r->speedup_vs_phong);
+  return std::exp(log_sum / static_cast<double>(rs.size()));
+}
+
+// `heading_tail`: ", ISA avx2" where a run measured several.
+void overview(std::string& md, std::span<const ReportRow> rows, int scenes, const std::string& heading_tail) {
+  md += "## Overview over " + std::to_string(scenes) + " scenes" + heading_tail +
+        "\n\n"
         "| configuration | speed-up over phong: geo. mean (range) | max LSB: worst | RMSE LSB: mean | "
         "% px > 1 LSB: worst | NaN suspects | on the time-RMSE front |\n"
         "|---|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& [config, rs] : by_config(rows)) {
-    double log_sum = 0, lo = INFINITY, hi = 0, worst_max = 0, rmse_sum = 0, worst_pct = 0;
+    double lo = INFINITY, hi = 0, worst_max = 0, rmse_sum = 0, worst_pct = 0;
     long long nan = 0;
     int front = 0;
     for (const ReportRow* r : rs) {
-      log_sum += std::log(r->speedup_vs_phong);
       lo = std::min(lo, r->speedup_vs_phong);
       hi = std::max(hi, r->speedup_vs_phong);
       worst_max = std::max(worst_max, r->error.max_abs_lsb);
@@ -102,7 +123,7 @@ void overview(std::string& md, std::span<const ReportRow> rows, int scenes) {
       front += r->pareto_rmse;
     }
     const double n = static_cast<double>(rs.size());
-    md += "| " + config + " | " + fmt("%.2f", std::exp(log_sum / n)) + " (" + fmt("%.2f", lo) + "–" +
+    md += "| " + config + " | " + fmt("%.2f", geo_mean_speedup(rs)) + " (" + fmt("%.2f", lo) + "–" +
           fmt("%.2f", hi) + ") | " + fmt("%.0f", worst_max) + " | " + fmt("%.3f", rmse_sum / n) +
           " | " + fmt("%.3f", worst_pct) + " | " + std::to_string(nan) + " | " +
           std::to_string(front) + "/" + std::to_string(rs.size()) + " |\n";
@@ -110,9 +131,48 @@ void overview(std::string& md, std::span<const ReportRow> rows, int scenes) {
   md += "\n";
 }
 
-void scene_table(std::string& md, const std::vector<const ReportRow*>& rs) {
+// Where the paper's methods pay: each configuration's speed-up over phong on the same ISA, and
+// phong's own time on each ISA against the first's.
+void isa_table(std::string& md, std::span<const ReportRow> rows, const std::vector<std::string>& isas) {
+  md += "## Speed-up over phong by ISA\n\nGeometric mean over the scenes of each configuration's "
+        "speed-up over `phong` on the same ISA (above 1: it beats phong there). The last row is "
+        "phong's own speed on each ISA against " + isas.front() + "'s.\n\n| configuration |";
+  std::string rule = "|---|";
+  for (const std::string& isa : isas) md += " " + isa + " |", rule += "---:|";
+  md += "\n" + rule + "\n";
+  std::vector<std::vector<ReportRow>> per_isa;
+  for (const std::string& isa : isas) per_isa.push_back(rows_on(rows, isa));
+  for (const auto& [config, ignored] : by_config(per_isa.front())) {
+    md += "| " + config + " |";
+    for (const std::vector<ReportRow>& on : per_isa) {
+      std::vector<const ReportRow*> rs;
+      for (const ReportRow& r : on)
+        if (r.config == config) rs.push_back(&r);
+      md += rs.empty() ? " – |" : " " + fmt("%.2f", geo_mean_speedup(rs)) + " |";
+    }
+    md += "\n";
+  }
+  // phong's rows of the first ISA and of each, scene by scene (the same scenes, in order).
+  auto phong_ms = [](const std::vector<ReportRow>& on) {
+    std::vector<double> ms;
+    for (const ReportRow& r : on)
+      if (r.config == "phong") ms.push_back(r.median_ms);
+    return ms;
+  };
+  const std::vector<double> first = phong_ms(per_isa.front());
+  md += "| phong's speed against " + isas.front() + " |";
+  for (const std::vector<ReportRow>& on : per_isa) {
+    const std::vector<double> ms = phong_ms(on);
+    double log_sum = 0;
+    for (std::size_t i = 0; i < ms.size() && i < first.size(); ++i) log_sum += std::log(first[i] / ms[i]);
+    md += ms.empty() ? " – |" : " " + fmt("%.2f", std::exp(log_sum / static_cast<double>(ms.size()))) + " |";
+  }
+  md += "\n\n";
+}
+
+void scene_table(std::string& md, const std::vector<const ReportRow*>& rs, bool several_isas) {
   const ReportRow& first = *rs.front();
-  md += "### " + first.scene + "\n\n" + std::to_string(first.width) + "×" +
+  md += "### " + first.scene + (several_isas ? ", ISA " + first.isa : "") + "\n\n" + std::to_string(first.width) + "×" +
         std::to_string(first.height) + ", " + std::to_string(first.triangles) + " triangles, " +
         std::to_string(first.covered_px) + " covered pixels.\n\n";
   if (!first.plot.empty()) md += "![" + first.scene + ": error against time](" + first.plot + ")\n\n";
@@ -173,11 +233,15 @@ std::string results_json(const RunInfo& run, std::span<const ReportRow> rows,
 
 std::string summary_markdown(const RunInfo& run, std::span<const ReportRow> rows,
                              std::span<const SkippedConfig> skipped, const std::string& plots_note) {
-  std::vector<std::pair<std::string, std::vector<const ReportRow*>>> scenes;
-  for (const ReportRow& r : rows) {
-    if (scenes.empty() || scenes.back().first != r.scene) scenes.push_back({r.scene, {}});
-    scenes.back().second.push_back(&r);
+  // Tables by scene and ISA: the rows come scene by scene, each scene's ISAs in turn.
+  std::vector<std::vector<const ReportRow*>> tables;
+  int scene_count = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i == 0 || rows[i].scene != rows[i - 1].scene || rows[i].isa != rows[i - 1].isa) tables.emplace_back();
+    if (i == 0 || rows[i].scene != rows[i - 1].scene) ++scene_count;
+    tables.back().push_back(&rows[i]);
   }
+  const std::vector<std::string> isas = isas_of(rows);
   std::string md = "# fastshade report\n\n" + run.date_utc + ", commit `" + run.commit + "`, " +
                    run.machine + ", ISA " + run.isa + ", " + std::to_string(run.threads) +
                    " threads, median of " + std::to_string(run.frames) +
@@ -189,14 +253,19 @@ std::string summary_markdown(const RunInfo& run, std::span<const ReportRow> rows
       "the next round), so that a machine slowing down slows them all alike: compare times "
       "within a scene, as ratios.\n\n";
   if (!plots_note.empty()) md += "**No plots:** " + plots_note + "\n\n";
-  overview(md, rows, static_cast<int>(scenes.size()));
+  if (isas.size() > 1) {
+    isa_table(md, rows, isas);
+    for (const std::string& isa : isas) overview(md, rows_on(rows, isa), scene_count, ", ISA " + isa);
+  } else {
+    overview(md, rows, scene_count, "");
+  }
   if (!skipped.empty()) {
     md += "Not measured (not in this build):\n\n";
     for (const SkippedConfig& s : skipped) md += "- `" + s.config + "`: " + s.reason + "\n";
     md += "\n";
   }
   md += "## Per scene\n\n";
-  for (const auto& scene : scenes) scene_table(md, scene.second);
+  for (const auto& table : tables) scene_table(md, table, isas.size() > 1);
   md +=
       "## Reading the columns\n\n"
       "- **ms**: median frame time (front end, binning, raster and shading; mesh loading "

@@ -10,13 +10,13 @@
 namespace fastshade {
 
 struct RunInfo {  // the same for every row of one run
-  std::string machine, isa, commit, date_utc;
+  std::string machine, isa, commit, date_utc;  // isa: the run's ISAs, comma-separated
   int threads = 0, frames = 0;
   double load_start = -1, load_end = -1;  // 1-minute load average before and after the run
 };
 
 struct ReportRow {
-  std::string scene, config, method;
+  std::string scene, isa, config, method;
   int width = 0, height = 0;
   long long triangles = 0, covered_px = 0;
   double median_ms = 0, raster_shade_ms = 0;  // medians over the timed frames

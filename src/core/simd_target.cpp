@@ -47,10 +47,15 @@ SimdTarget simd_target(Isa isa) {
   throw InputError("--isa", "not an ISA (value " + std::to_string(static_cast<int>(isa)) + ")");
 }
 
-std::string simd_target_name(SimdTarget target) {
+Isa simd_target_isa(SimdTarget target) {
   if (target.table_index == 0) target = simd_target(Isa::Best);
   for (const IsaTarget& t : kIsas)
-    if (table_index(t.target) == target.table_index) return std::string(option_name(t.isa));
+    if (table_index(t.target) == target.table_index) return t.isa;
+  return Isa::Best;
+}
+
+std::string simd_target_name(SimdTarget target) {
+  if (const Isa isa = simd_target_isa(target); isa != Isa::Best) return std::string(option_name(isa));
   const int64_t best = best_target();  // a target outside kIsas (the build's HWY_TARGETS)
   return table_index(best) == target.table_index ? hwy::TargetName(best) : "unknown";
 }

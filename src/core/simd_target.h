@@ -20,6 +20,9 @@ struct SimdTarget {
 // Throws InputError ("--isa: ...") for an ISA this CPU or build cannot run. available_isas()
 // (include/fastshade/options.h) lists those it can.
 SimdTarget simd_target(Isa isa);
-std::string simd_target_name(SimdTarget target);  // "avx512"; the best one's name for 0
+// The named ISA a target runs (Isa::Best for a target outside the four, from the build's
+// HWY_TARGETS), and its name: "avx512"; the best one's for table index 0.
+Isa simd_target_isa(SimdTarget target);
+std::string simd_target_name(SimdTarget target);
 
 }  // namespace fastshade

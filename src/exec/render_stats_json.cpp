@@ -30,6 +30,7 @@ std::string RenderStats::to_json() const {
           {"tile", s.tile},
           {"isa", s.isa},
           {"method", s.method},
+          {"drawn_as", s.drawn_as},
           {"frames", s.frames},
           {"median_ms",
            {{"front_end", s.median.front_end},

@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "classify/classifier.h"
+#include "exec/auto_cost.h"
 #include "core/ms_between.h"
 #include "core/simd_target.h"
 #include "exec/aov_pass.h"
@@ -87,8 +88,14 @@ struct Renderer::Impl {
     const RenderOptions& c = options;
     frame.simd = resolved.simd;
     setup.simd = frame.simd;
+    setup.viewport = make_viewport(scene.width, scene.height);
     frame.grid = make_grid(scene.width, scene.height,
                            resolve_tile_px(o.tile_px, scene.width, scene.height, arena.threads()));
+    if (auto_cost_applies(*method, scene, c) &&
+        !auto_classifies(simd_target_isa(frame.simd), sampled_triangle_px(geometry, xf, setup.viewport))) {
+      method = &find_method(ShadingMethod::Phong);
+      options.normals = PhongNormals::Normalize;  // auto's --normals is its diffuse path's alone
+    }
     frame.shade = shade_constants(scene, xf, c);
     draw = method->select(frame.simd, frame.shade, c);
     // Without lights `auto` has nothing to classify (every colour is the ambient one).
@@ -101,7 +108,6 @@ struct Renderer::Impl {
       // The literal rule is there to measure the paper's classifier: it classifies everything.
       setup.classify_min_box_px = paper_rule ? 0.0 : c.classify_min_px;
     }
-    setup.viewport = make_viewport(scene.width, scene.height);
     setup.cull = scene.cull;
     // Culling back faces would remove an inward-wound mesh's occluders.
     if (c.hidden_faces == HiddenFaces::Skip && scene.cull == Cull::None) {
@@ -121,6 +127,7 @@ struct Renderer::Impl {
     stats.threads = arena.threads();
     stats.tile = frame.grid.tile_px;
     stats.method = option_name(o.method);
+    stats.drawn_as = option_name(method->id);
     stats.isa = simd_target_name(frame.simd);
   }
 

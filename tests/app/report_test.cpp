@@ -18,6 +18,7 @@
 #include "app/report_output.h"
 #include "app/report_scenes.h"
 #include "fastshade/error.h"
+#include "fastshade/options.h"
 #include "light/brdf.h"
 #include "support/cli_fixture.h"
 
@@ -235,6 +236,30 @@ TEST_F(ReportCli, TinySceneWritesRowsWithEveryColumn) {
   EXPECT_NE(summary.find("No plots"), std::string::npos);  // --no-plots, and the summary says so
 }
 
+TEST_F(ReportCli, SeveralIsasGiveRowsAndSpeedUpsPerIsa) {
+  const std::vector<Isa> isas = available_isas();
+  if (isas.size() < 2) GTEST_SKIP() << "this CPU runs one ISA";
+  const std::string first(option_name(isas.front())), last(option_name(isas.back()));
+  const fs::path out = dir_ / "out";
+  const test::Outcome r = report((dir_ / "tiny.json").string() + " --out " + out.string() + " --isa " + first +
+                                 ",best --config gouraud --frames 1 --threads 1 --no-plots --heat-maps 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(test::slurp(out / "results.json"));
+  EXPECT_EQ(j["run"]["isa"], first + "," + last);
+  ASSERT_EQ(j["rows"].size(), 6u);  // reference, phong, gouraud on each
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(j["rows"][i]["isa"], i < 3 ? first : last) << i;
+    if (j["rows"][i]["config"] == "phong") EXPECT_EQ(j["rows"][i]["speedup_vs_phong"].get<double>(), 1.0);
+  }
+  // Each ISA's heat map under its own name.
+  EXPECT_NE(j["rows"][2]["heat_map"], j["rows"][5]["heat_map"]);
+  EXPECT_TRUE(fs::exists(out / j["rows"][5]["heat_map"].get<std::string>()));
+  const std::string summary = test::slurp(out / "summary.md");
+  EXPECT_NE(summary.find("## Speed-up over phong by ISA"), std::string::npos);
+  EXPECT_NE(summary.find("| configuration | " + first + " | " + last + " |"), std::string::npos);
+  EXPECT_NE(summary.find(", ISA " + last), std::string::npos);
+}
+
 TEST_F(ReportCli, OnlyConfigurationsOfMissingMethodsOrFlagsAreSkipped) {
   const test::Outcome r = report("--list-configs");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -256,6 +281,8 @@ TEST_F(ReportCli, BadUsageExitsTwoAndWritesNothing) {
   expect_usage_error(tiny + out + " --config \"phong --brdf nope\"", "--brdf");
   expect_usage_error((dir_ / "missing.json").string() + out, "missing.json");
   expect_usage_error(tiny + " --out " + tiny, "not a directory");
+  expect_usage_error(tiny + out + " --isa scalar,scalar", "listed twice");
+  expect_usage_error(tiny + out + " --isa scalar,nope", "--isa");
 }
 
 }  // namespace

@@ -30,17 +30,18 @@ std::string mesh_scene_json(const std::string& mesh) {
     "objects": [{"mesh": ")" + mesh + R"(", "material": "m"}]})";
 }
 
+// `auto` here is the classifier itself (`--classifier bound`): the cost model's choice of plain
+// phong is tested in tests/exec/auto_cost_test.cpp, and within the budget below.
 RenderOptions with_method(const std::string& method) {
   RenderOptions o;
   o.method = parse_option<ShadingMethod>(method, "method");
+  if (o.method == ShadingMethod::Auto) o.classifier = ClassifierRule::Bound;
   o.threads = 2;
   return o;
 }
 
-void expect_auto_within_budget(const Scene& scene, const Image& exact, double classify_min_px,
+void expect_auto_within_budget(const Scene& scene, const Image& exact, const RenderOptions& o,
                                const std::string& name) {
-  RenderOptions o = with_method("auto");
-  o.classify_min_px = classify_min_px;
   RenderStats stats;
   const Image fast = render(scene, o, 1, &stats);
   const ImageDiff diff = compare_images(to_float(fast), to_float(exact));
@@ -50,19 +51,26 @@ void expect_auto_within_budget(const Scene& scene, const Image& exact, double cl
   EXPECT_LE(over_share_of_covered, 0.1) << name << ": % of covered pixels off by more than 1 LSB";
   EXPECT_LE(diff.max_abs_lsb, 2.0) << name << ": worst pixel (" << diff.worst_x << ", " << diff.worst_y << ")";
   EXPECT_EQ(diff.nan_count, 0) << name;
+  if (o.classifier == ClassifierRule::Cost && stats.drawn_as == "phong") return;  // no paths to sum
   long long path_pixels = 0;
   for (const PathStats& p : stats.paths) path_pixels += p.pixels;
   EXPECT_EQ(path_pixels, stats.covered_pixels) << name << ": every visible pixel belongs to one path";
 }
 
-// Renders `auto` and `reference`, checks the issue's accuracy figures and the plan's sums: at
-// the defaults, and with every triangle classified (a small image makes most meshes' blocks
-// dense, which would leave the classifier out).
+// Renders `auto` and `reference`, checks the issue's accuracy figures and the plan's sums: as
+// the cost model decides (the default), classified at the default --classify-min-px, and with
+// every triangle classified (a small image makes most meshes' blocks dense, which would leave
+// the classifier out).
 void expect_auto_within_budget(const Scene& scene, const std::string& name) {
   const Image exact = render(scene, with_method("reference"));
-  for (double classify_min_px : {RenderOptions().classify_min_px, 0.0})
-    expect_auto_within_budget(scene, exact, classify_min_px,
-                              name + " --classify-min-px " + std::to_string(int(classify_min_px)));
+  RenderOptions as_default;
+  as_default.threads = 2;
+  expect_auto_within_budget(scene, exact, as_default, name + " --classifier cost");
+  for (double classify_min_px : {RenderOptions().classify_min_px, 0.0}) {
+    RenderOptions o = with_method("auto");
+    o.classify_min_px = classify_min_px;
+    expect_auto_within_budget(scene, exact, o, name + " --classify-min-px " + std::to_string(int(classify_min_px)));
+  }
 }
 
 TEST(Auto, SceneFilesWithinOneLsbOfReference) {
@@ -171,7 +179,7 @@ TEST(Auto, OptionsForAutoAreRefusedByOtherMethods) {
   o.spec_method = static_cast<SpecMethod>(2);  // outside the enum
   EXPECT_THROW(validate(o), InputError);
   o = with_method("auto");
-  o.classifier = static_cast<ClassifierRule>(2);
+  o.classifier = static_cast<ClassifierRule>(3);
   EXPECT_THROW(validate(o), InputError);
   o = with_method("phong");
   o.classify_min_px = 10;
