@@ -20,21 +20,7 @@ views=${5:-1}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 hz=$(getconf CLK_TCK)
-
-busy_jiffies() { awk '/^cpu / {print $2 + $3 + $4 + $7 + $8 + $9}' /proc/stat; }
-median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
-
-# Waits (at most a minute) until the CPUs were at least 95 % idle over the last half second.
-wait_for_idle() {
-  local a b tries=0
-  while [ $tries -lt 120 ]; do
-    a=$(awk '/^cpu / {print $5 + $6, $2 + $3 + $4 + $5 + $6 + $7 + $8 + $9}' /proc/stat)
-    sleep 0.5
-    b=$(awk '/^cpu / {print $5 + $6, $2 + $3 + $4 + $5 + $6 + $7 + $8 + $9}' /proc/stat)
-    [ "$(echo "$a $b" | awk '{print (($3 - $1) >= 0.95 * ($4 - $2))}')" = 1 ] && return
-    tries=$((tries + 1))
-  done
-}
+source tools/timing_helpers.sh
 
 # One run: prints "RATE WALL_S OTHERS_CPU_FRACTION".
 run() {
