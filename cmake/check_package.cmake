@@ -12,7 +12,8 @@ function(run)
   message(STATUS "${out}")
 endfunction()
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-foreach(path include/fastshade/render.h lib/libfastshade.a lib/cmake/fastshade/fastshadeConfig.cmake bin/fastshade)
+foreach(path include/fastshade/render.h lib/libfastshade.a lib/cmake/fastshade/fastshadeConfig.cmake bin/fastshade
+             lib/fastshade/libfastshade_oiio.so)
   if(NOT EXISTS ${prefix}/${path})
     message(FATAL_ERROR "the install tree lacks ${path}")
   endif()
@@ -24,3 +25,6 @@ run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/package/consumer -B ${WORK_DIR}/buil
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
+# The installed program writes PNG itself and TIFF through the plugin.
+run(${prefix}/bin/fastshade render -o ${WORK_DIR}/default.png)
+run(${prefix}/bin/fastshade render -o ${WORK_DIR}/default.tif)

@@ -14,7 +14,7 @@ mode=${1:-}
 case "$mode" in render|test|sanitize) ;; *) echo "usage: bash tools/dev.sh render|test|sanitize" >&2; exit 2 ;; esac
 
 packages=(build-essential cmake ninja-build pkg-config libtbb-dev libglm-dev libopenmesh-dev
-          libopenimageio-dev libhwy-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
+          libopenimageio-dev libpng-dev libhwy-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
           libcli11-dev)
 [ "$mode" = render ] || packages+=(python3-dev python3-venv)
 # Optional, not installed here: python3-matplotlib draws the plots of `fastshade report` and

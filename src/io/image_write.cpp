@@ -1,5 +1,6 @@
-// check_output_path and write_image: 8-bit RGB out through OpenImageIO, via a temporary file
-// in the target's directory that is renamed onto the target, so no partial file ever remains.
+// check_output_path and write_image: 8-bit RGB out, via a temporary file in the target's
+// directory that is renamed onto the target, so no partial file ever remains. PNG is written
+// here (io/png_write.h), every other format through OpenImageIO's plugin (io/image_codec.h).
 //
 // Formats: the data are written as UINT8 where the format takes it (png, tif, ...). EXR has no
 // 8-bit channels: there the file holds HALF channels with value/255 (0..1, linear in the 8-bit
@@ -14,12 +15,11 @@
 #include <system_error>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "fastshade/error.h"
 #include "fastshade/image.h"
 #include "fastshade/atomic_file.h"
-#include "io/oiio_error.h"
+#include "io/image_codec.h"
+#include "io/png_write.h"
 
 namespace fastshade {
 namespace fs = std::filesystem;
@@ -31,11 +31,13 @@ fs::path parent_dir(const fs::path& path) {
   return dir.empty() ? fs::path(".") : dir;
 }
 
-bool is_exr(const fs::path& path) {
+std::string lower_extension(const fs::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr";
+  return ext;
 }
+bool is_exr(const fs::path& path) { return lower_extension(path) == ".exr"; }
+bool is_png(const fs::path& path) { return lower_extension(path) == ".png"; }
 
 }  // namespace
 
@@ -55,11 +57,8 @@ void check_output_path(const fs::path& path) {
     throw InputError(where, "directory '" + dir.string() + "' is not writable");
   const std::string ext = path.extension().string();
   if (ext.empty()) throw InputError(where, "no file extension to choose an image format");
-  auto out = OIIO::ImageOutput::create(where);
-  if (!out) {
-    io::take_global_error();
+  if (!is_png(path) && !io::image_codec(where).can_write(where))
     throw InputError(where, "unsupported output format '" + ext + "'");
-  }
 }
 
 namespace {
@@ -74,39 +73,11 @@ void check_image(const Image& image, const std::string& where) {
                                 " bytes, expected " + std::to_string(n));
 }
 
-// Pixels in `format` (interleaved; UNKNOWN: each channel in spec.channelformats) into the
-// temporary file, which the caller commits. Throws InputError naming `where`.
-void write_pixels(const TempFile& temp, const std::string& where, OIIO::ImageSpec spec, OIIO::TypeDesc format,
-                  const void* pixels) {
-  // OpenImageIO stamps EXR and TIFF files with the time of writing unless DateTime is set;
-  // empty, the same pixels give the same file bytes, run after run and engine after engine.
-  spec.attribute("DateTime", "");
-  // PNG stays lossless; only how hard zlib tries changes. A 1080p bunny frame (mostly
-  // background) took 95 ms at OpenImageIO's default (level 6, libpng's adaptive filters) and
-  // 22 ms at level 1 with the Up filter, for a file 23 % larger (285 KB against 232 KB); level 3
-  // with Up took 31 ms for 8 % (docs/PERFORMANCE.md, "Batch"). At 1080p a batch spent more on
-  // encoding than on rendering.
-  constexpr int kPngZlibLevel = 1;
-  constexpr int kPngFilterUp = 0x20;  // libpng's PNG_FILTER_UP
-  spec.attribute("png:compressionLevel", kPngZlibLevel);
-  spec.attribute("png:filter", kPngFilterUp);
-  const std::string temp_name = temp.path().string();
-  auto out = OIIO::ImageOutput::create(temp_name);
-  if (!out) {
-    std::string err = io::take_global_error();
-    throw InputError(where, "cannot create image writer: " + err);
-  }
-  // ImageOutput::open creates the file, so from here on the temp file may exist on disk.
-  bool ok = out->open(temp_name, spec);
-  if (ok) {
-    ok = out->write_image(format, pixels);
-    ok = out->close() && ok;
-  }
-  if (!ok) {
-    std::string err = io::one_line(out->geterror());
-    out.reset();
-    throw InputError(where, "cannot write image: " + (err.empty() ? std::string("unknown error") : err));
-  }
+// Through the plugin into the temporary file, which the caller commits. Throws InputError
+// naming `where`.
+void write_codec(const TempFile& temp, const std::string& where, const io::CodecImage& image) {
+  const std::string why = io::image_codec(where).write(temp.path().string(), image);
+  if (!why.empty()) throw InputError(where, why);
 }
 
 // EXR has no 8-bit channels: colour goes there as value/255.
@@ -116,16 +87,31 @@ std::vector<float> unit_floats(const Image& image) {
   return out;
 }
 
-void write_colour(const Image& image, const TempFile& temp, const std::string& where, bool exr) {
-  OIIO::ImageSpec spec(image.width, image.height, 3, exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
-  if (!exr) return write_pixels(temp, where, spec, OIIO::TypeDesc::UINT8, image.rgb.data());
-  write_pixels(temp, where, spec, OIIO::TypeDesc::FLOAT, unit_floats(image).data());
+void write_colour(const Image& image, const TempFile& temp, const std::string& where, const fs::path& path) {
+  if (is_png(path)) {
+    const std::string why = io::write_png_rgb8(temp.path().string(), image.width, image.height, image.rgb.data());
+    if (!why.empty()) throw InputError(where, "cannot write image: " + why);
+    return;
+  }
+  io::CodecImage out;
+  out.width = image.width;
+  out.height = image.height;
+  if (!is_exr(path)) {
+    out.channel_types.assign(3, io::CodecType::UInt8);
+    out.pixels = image.rgb.data();
+    return write_codec(temp, where, out);
+  }
+  const std::vector<float> unit = unit_floats(image);
+  out.channel_types.assign(3, io::CodecType::Half);
+  out.pixel_type = io::CodecType::Float;
+  out.pixels = unit.data();
+  write_codec(temp, where, out);
 }
 
 // One EXR channel: its name, its type in the file, and where pixel i's value is.
 struct AovChannel {
   std::string name;
-  OIIO::TypeDesc type;
+  io::CodecType type;
   const void* data;
   int stride;  // values per pixel in `data`
   int offset;
@@ -138,19 +124,20 @@ void write_aov_exr(const Image* colour, const AovImages& aovs, const TempFile& t
   std::vector<float> rgb;
   if (colour) {
     rgb = unit_floats(*colour);
-    for (int c = 0; c < 3; ++c) channels.push_back({std::string(1, "RGB"[c]), OIIO::TypeDesc::FLOAT, rgb.data(), 3, c});
+    for (int c = 0; c < 3; ++c) channels.push_back({std::string(1, "RGB"[c]), io::CodecType::Float, rgb.data(), 3, c});
   }
-  if (aovs.present.depth) channels.push_back({"Z", OIIO::TypeDesc::FLOAT, aovs.depth.data(), 1, 0});
+  if (aovs.present.depth) channels.push_back({"Z", io::CodecType::Float, aovs.depth.data(), 1, 0});
   if (aovs.present.normal)
     for (int c = 0; c < 3; ++c)
-      channels.push_back({std::string("N.") + "XYZ"[c], OIIO::TypeDesc::FLOAT, aovs.normal.data(), 3, c});
-  if (aovs.present.triangle_id) channels.push_back({"triangle_id", OIIO::TypeDesc::UINT32, aovs.triangle_id.data(), 1, 0});
-  if (aovs.present.object_id) channels.push_back({"object_id", OIIO::TypeDesc::UINT32, aovs.object_id.data(), 1, 0});
-  OIIO::ImageSpec spec(aovs.width, aovs.height, static_cast<int>(channels.size()), OIIO::TypeDesc::FLOAT);
-  spec.channelnames.clear();
+      channels.push_back({std::string("N.") + "XYZ"[c], io::CodecType::Float, aovs.normal.data(), 3, c});
+  if (aovs.present.triangle_id) channels.push_back({"triangle_id", io::CodecType::UInt32, aovs.triangle_id.data(), 1, 0});
+  if (aovs.present.object_id) channels.push_back({"object_id", io::CodecType::UInt32, aovs.object_id.data(), 1, 0});
+  io::CodecImage out;
+  out.width = aovs.width;
+  out.height = aovs.height;
   for (const AovChannel& c : channels) {
-    spec.channelnames.push_back(c.name);
-    spec.channelformats.push_back(c.type);
+    out.channel_names.push_back(c.name);
+    out.channel_types.push_back(c.type);
   }
   // Every channel is 4 bytes: pixel i's channel k at (i * channels + k) * 4.
   const size_t pixels = size_t(aovs.width) * size_t(aovs.height);
@@ -160,7 +147,9 @@ void write_aov_exr(const Image* colour, const AovImages& aovs, const TempFile& t
     for (size_t i = 0; i < pixels; ++i)
       native[i * channels.size() + k] = src[i * channels[k].stride + channels[k].offset];
   }
-  write_pixels(temp, where, spec, OIIO::TypeDesc::UNKNOWN, native.data());
+  out.per_channel = true;
+  out.pixels = native.data();
+  write_codec(temp, where, out);
 }
 
 void check_aovs(const AovImages& aovs, const Image& image, const std::string& where) {
@@ -180,7 +169,7 @@ void write_image(const Image& image, const fs::path& path) {
   const std::string where = path.string();
   check_image(image, where);
   TempFile temp(path);
-  write_colour(image, temp, where, is_exr(path));
+  write_colour(image, temp, where, path);
   temp.commit();
 }
 
@@ -208,7 +197,7 @@ void write_image(const Image& image, const AovImages& aovs, const fs::path& path
   }
   const fs::path beside = aov_path(path);
   TempFile colour(path), aov(beside);
-  write_colour(image, colour, where, false);
+  write_colour(image, colour, where, path);
   write_aov_exr(nullptr, aovs, aov, beside.string());
   aov.commit();
   colour.commit();

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fastshade/image.h"
 #include "support/cli_fixture.h"
 
 namespace {
@@ -93,6 +94,28 @@ TEST_F(Cli, BadMeshesFailWithOneLineNamingTheMesh) {
   }
   expect_bad_input("info " + (dir_ / "nothing.ply").string(), "nothing.ply");
   expect_bad_input("info " + dir_.string(), dir_.string());
+}
+
+// The program loads OpenImageIO only for a format other than PNG (src/io/image_codec.h): linked
+// in, its 250 libraries cost every start 0.3 s. LD_DEBUG=files names each library the loader
+// opens; a PNG render opens none of OpenImageIO's, a TIFF render opens the plugin.
+TEST_F(Cli, PngNeedsNoOpenImageIoAndOtherFormatsLoadIt) {
+  // What the loader opened while rendering to `file`.
+  const auto libraries_opened = [&](const std::string& file) {
+    const fs::path log = dir_ / "ld.txt";
+    const std::string cmd = "LD_DEBUG=files " + std::string(FASTSHADE_BINARY) + " render -o " + (dir_ / file).string() +
+                            " >/dev/null 2>" + log.string();
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    return slurp(log);
+  };
+  const std::string png = libraries_opened("a.png");
+  EXPECT_NE(png.find("libtbb"), std::string::npos) << "LD_DEBUG printed no library";
+  EXPECT_EQ(png.find("libOpenImageIO"), std::string::npos);
+  EXPECT_EQ(png.find("libfastshade_oiio"), std::string::npos);
+  const std::string tif = libraries_opened("a.tif");
+  EXPECT_NE(tif.find("libfastshade_oiio"), std::string::npos);
+  EXPECT_NE(tif.find("libOpenImageIO"), std::string::npos);
+  EXPECT_EQ(fastshade::read_image(dir_ / "a.png").rgb, fastshade::read_image(dir_ / "a.tif").rgb);  // the same pixels either way
 }
 
 TEST_F(Cli, CompareRejectsMismatchedSizes) {
