@@ -3,7 +3,8 @@
 # docs/RESULTS.md: `fastshade report` on every mesh of ../shared/models.
 #   bash tools/results.sh [BUILD_DIR]
 # Needs a Release build and ../shared/models; the plots need Debian's python3-matplotlib (without
-# it the report still writes the tables and says so). Takes about 3-6 minutes on 2 cores.
+# it the report still writes the tables and says so). Takes about 3-6 minutes on 2 cores, and
+# 6 more for the table by ISA (one thread: where the paper's methods pay on which vector width).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-build}/fastshade
@@ -19,6 +20,18 @@ rm -rf docs/results.new docs/results.heat
 "$bin" report "$models/bunny.ply" --config gouraud --out docs/results.heat --frames 1 --heat-maps 1 \
   --no-plots > /dev/null 2>&1
 mv docs/results.heat/heatmaps docs/results.new/heatmaps
+isa_configs=(auto "auto --classifier bound" "auto --classifier paper" gouraud "gouraud --gouraud sierpinski"
+             "hybrid --max-error 1" "phong --brdf schlick-pow2" "phong --normals adaptive" "phong --normals equal-angle")
+isa_args=()
+for c in "${isa_configs[@]}"; do isa_args+=(--config "$c"); done
+# The ISAs this CPU runs, by the flags Highway's targets need.
+flags=$(grep -m1 '^flags' /proc/cpuinfo)
+isas=scalar
+[[ $flags == *" sse4_2"* ]] && isas+=,sse4
+[[ $flags == *" avx2"* && $flags == *" fma"* && $flags == *" bmi2"* ]] && isas+=,avx2
+[[ $flags == *" avx512bw"* && $flags == *" avx512vl"* && $flags == *" avx512dq"* ]] && isas+=,avx512
+"$bin" report "$models" --out docs/results.new/isa --isa "$isas" --threads 1 --frames 5 --heat-maps 0 \
+  --no-plots "${isa_args[@]}"
 rm -rf docs/results docs/results.heat
 mv docs/results.new docs/results
 
@@ -32,6 +45,11 @@ trap 'rm -f "$generated"' EXIT
   # "## Overview" up to the next section, one heading level down.
   awk '/^## Overview/ {on = 1} on && /^## / && !/^## Overview/ {exit} on' docs/results/summary.md |
     sed 's/^## /### /'
+  echo "### Speed-up over phong by ISA"
+  echo
+  sed -n '3p' docs/results/isa/summary.md
+  echo
+  awk '/^## Speed-up over phong by ISA/ {on = 1; next} on && /^## / {exit} on' docs/results/isa/summary.md
   echo "Every scene's table: [results/summary.md](results/summary.md); every figure:"
   echo "[results/results.csv](results/results.csv)."
   echo
