@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <mutex>
 #include <system_error>
@@ -37,7 +38,10 @@ std::vector<fs::path> plugin_dirs() {
   }
   dirs.emplace_back(FASTSHADE_BUILD_PLUGIN_DIR);
   dirs.emplace_back(FASTSHADE_INSTALL_PLUGIN_DIR);
-  return dirs;
+  std::vector<fs::path> unique;  // the program is both the binary holding this code and /proc/self/exe
+  for (const fs::path& dir : dirs)
+    if (std::find(unique.begin(), unique.end(), dir) == unique.end()) unique.push_back(dir);
+  return unique;
 }
 
 Loaded load() {
