@@ -3,8 +3,9 @@
 # of triangles and of visible pixels on each path, and auto's error against `reference`.
 #   bash tools/classifier_table.sh [BUILD_DIR [RENDER_FLAGS...]] > table.md
 # The frame of the benchmarks (1920x1080, fit camera at 2.5 radii, light toward (1,1,1) in
-# view space, kd 0.7, ks 0.5), default --spec-threshold and --max-error; RENDER_FLAGS go to
-# auto's render (e.g. --classify-min-px 0: the classifier's plan for every triangle).
+# view space, kd 0.7, ks 0.5), default --spec-threshold and --max-error, `--classifier bound` (the
+# classifier on every frame, whatever auto's cost model would choose); RENDER_FLAGS go to auto's
+# render (e.g. --classify-min-px 0: the classifier's plan for every triangle).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-build}/fastshade
@@ -26,7 +27,7 @@ for mesh in "$models"/*.{obj,ply,off,stl}; do
  "materials": {"m": {"diffuse": 0.7, "specular": 0.5, "shininess": $n}},
  "objects": [{"mesh": "$mesh", "material": "m"}]}
 JSON
-    "$bin" render "$work/s.json" -o "$work/auto.png" --stats "$work/auto.json" "$@" > /dev/null
+    "$bin" render "$work/s.json" -o "$work/auto.png" --stats "$work/auto.json" --classifier bound "$@" > /dev/null
     "$bin" render "$work/s.json" -o "$work/ref.png" --method reference > /dev/null
     "$bin" compare "$work/auto.png" "$work/ref.png" --json > "$work/diff.json"
     python3 - "$work/auto.json" "$work/diff.json" "$(basename "$mesh")" "$n" <<'PY'
