@@ -101,7 +101,9 @@ class Renderer:
     "schlick", "schlick-pow2", "quadratic", "quadratic-fit", "poly2", "poly3"), normals
     (phong's per-pixel normals), gouraud ("sierpinski" splits large triangles), hidden_faces
     ("skip" culls back faces a closed mesh provably hides), and auto's spec_threshold,
-    spec_method, classifier and classify_min_px. An unknown option or a bad value raises
+    spec_method, classifier ("cost": classify where it pays on this frame and ISA, else draw as
+    phong; "bound": always; "paper": the paper's rule) and classify_min_px. Frame.stats says
+    which method drew ("drawn_as"). An unknown option or a bad value raises
     InputError naming it. The scene is copied: changing it later changes nothing here. The GIL
     is released while a frame renders.
     """
