@@ -45,6 +45,27 @@ def test_render_returns_colour_and_stats():
     assert frame.stats["triangles_in"] == 2 and frame.stats["method"] == "auto"
 
 
+def grid_mesh(n):
+    """A bumpy n x n grid of quads over [-1, 1]^2: 2 n^2 triangles."""
+    u = np.linspace(-1.0, 1.0, n + 1)
+    x, y = np.meshgrid(u, u)
+    vertices = np.stack([x, y, 0.1 * np.sin(6 * x) * np.cos(6 * y)], axis=-1).reshape(-1, 3)
+    i = np.arange(n)[:, None] * (n + 1) + np.arange(n)[None, :]
+    quads = np.stack([i, i + 1, i + n + 2, i + n + 1], axis=-1).reshape(-1, 4)
+    faces = np.concatenate([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]])
+    return fastshade.Mesh(vertices.astype(np.float64), faces.astype(np.int64))
+
+
+def test_auto_draws_a_frame_of_tiny_triangles_as_phong():
+    # 80,000 triangles in 64 x 48 pixels: far below any ISA's threshold (docs/CLASSIFIER.md).
+    scene = lit_scene(grid_mesh(200))
+    frame = fastshade.render(scene, threads=2)
+    assert frame.stats["method"] == "auto" and frame.stats["drawn_as"] == "phong"
+    assert np.array_equal(frame.color, fastshade.render(scene, threads=2, method="phong").color)
+    classified = fastshade.render(scene, threads=2, classifier="bound")
+    assert classified.stats["drawn_as"] == "auto" and classified.stats["paths"]
+
+
 def read_ppm(path):
     data = path.read_bytes()
     header = re.match(rb"P6\s+(\d+)\s+(\d+)\s+255\s", data)  # one whitespace byte before the pixels
