@@ -225,8 +225,10 @@ class ReaderPool {
     OpenMesh::IO::BaseReader* reader_;
   };
 
+  // Never destroyed either: a static destructor would drop the pool's pointers at exit (so leak
+  // checkers report every reader) while a detached thread might still be reading.
   static ReaderPool& instance() {
-    static ReaderPool pool;
+    static ReaderPool& pool = *new ReaderPool;
     return pool;
   }
 
