@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/report_configs.h"
+
 namespace fastshade {
 
 namespace {
@@ -156,7 +158,7 @@ void isa_table(std::string& md, std::span<const ReportRow> rows, const std::vect
   auto phong_ms = [](const std::vector<ReportRow>& on) {
     std::vector<double> ms;
     for (const ReportRow& r : on)
-      if (r.config == "phong") ms.push_back(r.median_ms);
+      if (r.config == kBaselineConfig) ms.push_back(r.median_ms);
     return ms;
   };
   const std::vector<double> first = phong_ms(per_isa.front());

@@ -10,16 +10,6 @@
 
 namespace fastshade {
 
-namespace {
-
-// Window pixels of a clip-space point in front of the camera (w > 0).
-glm::dvec2 window_px(const glm::vec4& clip, const Viewport& vp) {
-  const double inv_w = 1.0 / static_cast<double>(clip.w);
-  return {(clip.x * inv_w + 1.0) * 0.5 * vp.width, (1.0 - clip.y * inv_w) * 0.5 * vp.height};
-}
-
-}  // namespace
-
 bool auto_cost_applies(const Method& method, const Scene& scene, const RenderOptions& o) {
   return method.id == ShadingMethod::Auto && !scene.lights.empty() && o.classifier == ClassifierRule::Cost;
 }
@@ -39,7 +29,10 @@ double sampled_triangle_px(const SceneGeometry& g, const ViewTransform& xf, cons
         const glm::vec4 clip = model_to_clip * glm::vec4(g.positions[g.triangles[t][k]], 1.0f);
         // Behind or at the eye (or not finite): the clipper's business, not an estimate's.
         usable = clip.w > 0.0f && std::isfinite(clip.x) && std::isfinite(clip.y);
-        if (usable) px[k] = window_px(clip, vp);
+        if (usable) {
+          const WindowPx at = window_px(clip, 1.0 / static_cast<double>(clip.w), vp);
+          px[k] = {at.x, at.y};
+        }
       }
       if (!usable) continue;
       const double x_lo = std::min({px[0].x, px[1].x, px[2].x}), x_hi = std::max({px[0].x, px[1].x, px[2].x});

@@ -3,7 +3,7 @@
 // Decided once per renderer from the geometry and the camera, never from a timing, so a scene
 // gives the same image on every run, thread count and tile size.
 #pragma once
-#include "core/simd_target.h"
+#include "fastshade/options.h"
 #include "front/projection.h"
 #include "front/scene_geometry.h"
 #include "front/vertex_stage.h"

@@ -7,10 +7,10 @@
 #include <tbb/parallel_for.h>
 
 #include "classify/classifier.h"
-#include "exec/auto_cost.h"
 #include "core/ms_between.h"
 #include "core/simd_target.h"
 #include "exec/aov_pass.h"
+#include "exec/auto_cost.h"
 #include "exec/exec_limits.h"
 #include "exec/frame_profile.h"
 #include "exec/frame_stats.h"

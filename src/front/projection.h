@@ -49,11 +49,18 @@ inline uint8_t vertex_flags(const glm::vec4& v, const Viewport& vp) {
   return outcode | (inside ? 0 : kNeedsClip);
 }
 
+// Window pixels (y down) of a clip-space point with 1/w = inv_w, before snapping.
+struct WindowPx {
+  double x, y;
+};
+inline WindowPx window_px(const glm::vec4& v, double inv_w, const Viewport& vp) {
+  return {(v.x * inv_w + 1.0) * 0.5 * vp.width, (1.0 - v.y * inv_w) * 0.5 * vp.height};
+}
+
 // Only for vertices inside near/far and the guard band (w > 0).
 inline ScreenVertex project(const glm::vec4& v, const Viewport& vp) {
   const double inv_w = 1.0 / static_cast<double>(v.w);
-  const double x_px = (v.x * inv_w + 1.0) * 0.5 * vp.width;
-  const double y_px = (1.0 - v.y * inv_w) * 0.5 * vp.height;
+  const auto [x_px, y_px] = window_px(v, inv_w, vp);
   return {static_cast<int32_t>(std::lrint(x_px * limits::kSubpixelOne)),
           static_cast<int32_t>(std::lrint(y_px * limits::kSubpixelOne)),
           static_cast<float>(v.z * inv_w * 0.5 + 0.5), static_cast<float>(inv_w)};
